@@ -1,0 +1,95 @@
+/**
+ * periarlequin: run a case described by a deal.II parameter file.
+ *
+ *   periarlequin input.prm                 run (serial, or under mpirun)
+ *   periarlequin --print-parameters [2|3]  print every parameter with default and documentation
+ */
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <periarlequin/simulator.h>
+
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+  using namespace dealii;
+
+  /** Read only "Dimension" from the file, skipping everything else. */
+  unsigned int
+  read_dimension(const std::string &file_name)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+    prm.parse_input(file_name, "", true);
+    return prm.get_integer("Dimension");
+  }
+
+  template <int dim>
+  void
+  run(const std::string &file_name)
+  {
+    ParameterHandler prm;
+    PeriArlequin::Simulator<dim>::declare_parameters(prm);
+    prm.parse_input(file_name);
+    PeriArlequin::Simulator<dim> simulator(prm, MPI_COMM_WORLD);
+    simulator.run();
+  }
+
+  template <int dim>
+  void
+  print_parameters()
+  {
+    ParameterHandler prm;
+    PeriArlequin::Simulator<dim>::declare_parameters(prm);
+    prm.set("Dimension", std::to_string(dim));
+    prm.print_parameters(std::cout, ParameterHandler::PRM);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const std::string first = argc > 1 ? argv[1] : "";
+      if (first == "--print-parameters")
+        {
+          const std::string d = argc > 2 ? argv[2] : "2";
+          if (d != "2" && d != "3")
+            {
+              std::cerr << "--print-parameters takes the dimension 2 or 3, not '" << d << "'.\n";
+              return 1;
+            }
+          if (root)
+            (d == "2") ? print_parameters<2>() : print_parameters<3>();
+          return 0;
+        }
+      if (argc != 2 || first.empty() || first[0] == '-')
+        {
+          if (root)
+            std::cerr << "Usage: periarlequin input.prm\n"
+                         "       periarlequin --print-parameters [2|3]\n";
+          return 1;
+        }
+      if (!std::ifstream(first))
+        {
+          if (root)
+            std::cerr << "Error: cannot open the parameter file '" << first << "'.\n";
+          return 1;
+        }
+      if (read_dimension(first) == 2)
+        run<2>(first);
+      else
+        run<3>(first);
+    }
+  catch (std::exception &error)
+    {
+      std::cerr << "\nError: " << error.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,69 @@
+#ifndef periarlequin_base_problem_data_h
+#define periarlequin_base_problem_data_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/fe/component_mask.h>
+
+#include <array>
+#include <memory>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /** What a boundary of the box prescribes. */
+  enum class BoundaryType
+  {
+    free,
+    displacement,
+    traction
+  };
+
+  /**
+   * Condition on one boundary id: a prescribed displacement on the selected components, or a
+   * traction vector, both muparser expressions of (x, y[, z], t).
+   */
+  template <int dim>
+  struct BoundaryCondition
+  {
+    BoundaryType                                    type = BoundaryType::free;
+    ComponentMask                                   components;
+    std::unique_ptr<Functions::ParsedFunction<dim>> function;
+  };
+
+  /**
+   * The data of an elastodynamic problem that do not depend on its discretisation: initial
+   * displacement and velocity, body force, and the condition on each boundary id of the box.
+   * All are vector-valued muparser expressions with named constants ("Function constants"),
+   * so that e.g. the paper's initial pulse (eq. 81) is written in the parameter file.
+   */
+  template <int dim>
+  class ProblemData
+  {
+  public:
+    static constexpr unsigned int n_boundaries = 2 * dim;
+
+    ProblemData();
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    Functions::ParsedFunction<dim> initial_displacement;
+    Functions::ParsedFunction<dim> initial_velocity;
+    /** Body force per unit volume [N/m^3]. */
+    Functions::ParsedFunction<dim> body_force;
+    /** True unless every component of the body-force expression is the literal 0. */
+    bool has_body_force = false;
+
+    std::array<BoundaryCondition<dim>, n_boundaries> boundary_conditions;
+
+    /** Whether any boundary carries a traction, i.e. a surface term of the external force. */
+    bool
+    has_tractions() const;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,126 @@
+#ifndef periarlequin_fe_fe_zone_h
+#define periarlequin_fe_fe_zone_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/problem_data.h>
+
+#include <functional>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * The classical (finite-element) zone: vector FE_Q displacements on the cells where the
+   * continuum lives and FE_Nothing elsewhere (an hp DoFHandler, so a pure PD region carries no
+   * FE unknowns), a lumped mass and the blended stiffness K_alpha = int alpha B^T D B, assembled
+   * once because the material is linear. Everything that the explicit integrators need from
+   * the continuum is here: K_alpha u, external forces, energies and the stable step.
+   */
+  template <int dim>
+  class FEZone
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+    using CellPredicate =
+      std::function<bool(const typename Triangulation<dim>::active_cell_iterator &)>;
+
+    /** A displacement component prescribed on a boundary, at a locally owned DoF. */
+    struct PrescribedDoF
+    {
+      unsigned int local_index;
+      unsigned int component;
+      unsigned int boundary_id;
+      Point<dim>   location;
+    };
+
+    FEZone(const parallel::distributed::Triangulation<dim> &triangulation,
+           const Parameters::FiniteElements                &fe_parameters,
+           const Parameters::Material                      &material);
+
+    /**
+     * Distribute DoFs (FE_Q on cells where @p in_fe_zone holds, FE_Nothing on the others),
+     * then assemble the lumped mass int alpha rho N_I and the blended stiffness, both weighted
+     * by the @p blending_weight alpha(x) (1 for a pure FE problem).
+     */
+    void
+    setup(const Function<dim> &blending_weight, const CellPredicate &in_fe_zone);
+
+    /** Shape a vector with the locally owned and ghost DoFs of this zone. */
+    void
+    initialize_vector(VectorType &vector) const;
+
+    /** Internal force K_alpha u (owned entries). */
+    void
+    compute_internal_force(const VectorType &displacement, VectorType &force) const;
+
+    /** External force at time @p time: alpha-weighted body force plus boundary tractions. */
+    void
+    compute_external_force(const ProblemData<dim> &data, const double time, VectorType &force) const;
+
+    /** Nodal interpolation of a dim-component function. */
+    void
+    interpolate(const Function<dim> &function, VectorType &vector) const;
+
+    /** The locally owned DoFs whose displacement is prescribed by a boundary condition. */
+    std::vector<PrescribedDoF>
+    prescribed_dofs(const ProblemData<dim> &data) const;
+
+    /**
+     * Largest stable step of the explicit central-difference/velocity-Verlet scheme,
+     * 2 / sqrt(lambda_max(M^-1 K_alpha)), with lambda_max from at most @p max_iterations power
+     * iterations on the symmetric M^-1/2 K M^-1/2 (stopped at a relative change of 1e-6).
+     * The start vector depends on DoF positions only, so the estimate is independent of the
+     * partition.
+     */
+    double
+    estimate_stable_time_step(const unsigned int max_iterations) const;
+
+    /** Kinetic energy 1/2 v^T M v. */
+    double
+    kinetic_energy(const VectorType &velocity) const;
+
+    /** Strain energy 1/2 u^T K_alpha u, given the internal force K_alpha u. */
+    double
+    strain_energy(const VectorType &displacement, const VectorType &internal_force) const;
+
+    const DoFHandler<dim> &
+    get_dof_handler() const;
+    const VectorType &
+    lumped_mass() const;
+    const Parameters::Material &
+    get_material() const;
+    types::global_dof_index
+    n_dofs() const;
+
+  private:
+    void
+    assemble_mass_and_stiffness(const Function<dim> &blending_weight);
+
+    const parallel::distributed::Triangulation<dim> &triangulation;
+    const Parameters::Material                       material;
+    const MPI_Comm                                   communicator;
+    hp::FECollection<dim>                            fe_collection;
+    hp::QCollection<dim>                             cell_quadrature;
+    hp::QCollection<dim - 1>                         face_quadrature;
+    MappingQ<dim>                                    mapping;
+    DoFHandler<dim>                                  dof_handler;
+    IndexSet                                         locally_owned_dofs;
+    IndexSet                                         locally_relevant_dofs;
+    TrilinosWrappers::SparseMatrix                   stiffness_matrix;
+    VectorType                                       mass;
+  };
+} // namespace PeriArlequin
+
+#endif

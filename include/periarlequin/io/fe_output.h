@@ -1,0 +1,41 @@
+#ifndef periarlequin_io_fe_output_h
+#define periarlequin_io_fe_output_h
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/fe/fe_zone.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * Field output of the FE zone: one .pvtu (with a .vtu per rank) per output step carrying
+   * displacement, velocity, the stress tensor components and the von Mises stress, plus a
+   * .pvd record so that ParaView shows the series against simulated time.
+   */
+  template <int dim>
+  class FEOutput
+  {
+  public:
+    FEOutput(const FEZone<dim> &fe_zone, const Parameters::Output &parameters);
+
+    void
+    write(const unsigned int                                 step,
+          const double                                       time,
+          const LinearAlgebra::distributed::Vector<double> &displacement,
+          const LinearAlgebra::distributed::Vector<double> &velocity);
+
+  private:
+    const FEZone<dim>                        &fe_zone;
+    const Parameters::Output                  parameters;
+    std::vector<std::pair<double, std::string>> records;
+  };
+} // namespace PeriArlequin
+
+#endif

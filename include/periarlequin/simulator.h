@@ -1,0 +1,112 @@
+#ifndef periarlequin_simulator_h
+#define periarlequin_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/problem_data.h>
+#include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/io/energy_history.h>
+#include <periarlequin/io/fe_output.h>
+
+#include <memory>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * Runs one case described by a parameter file: builds the mesh and the zones, checks the
+   * time step against the stable step, integrates in time with velocity Verlet and writes
+   * fields, energies and progress.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+    /** Declare every parameter of a simulation in @p dim dimensions, documented. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Parse (and validate) a parameter handler filled by declare_parameters(). */
+    Simulator(ParameterHandler &prm, const MPI_Comm communicator);
+
+    /** Mesh, DoFs, matrices, initial state and the stable-step check. */
+    void
+    setup();
+
+    /** setup() if not done yet, then the time loop to the end time. */
+    void
+    run();
+
+    /** One step of velocity Verlet from the current state. */
+    void
+    advance();
+
+    const FEZone<dim> &
+    get_fe_zone() const;
+    const ProblemData<dim> &
+    get_problem_data() const;
+    const EnergyHistory &
+    get_energy_history() const;
+    const VectorType &
+    get_displacement() const;
+    const VectorType &
+    get_velocity() const;
+    double
+    get_time() const;
+    double
+    get_time_step() const;
+    double
+    get_stable_time_step() const;
+
+  private:
+    /** Prescribed displacement and its central-difference velocity and acceleration. */
+    void
+    apply_prescribed_motion(const double time);
+    /** Accelerations M^-1 (F_ext - K u) on free DoFs and the applied force vector P. */
+    void
+    compute_accelerations(const double time);
+    void
+    record_energies();
+    void
+    write_output();
+    void
+    report_progress(const unsigned int n_steps, const bool force);
+
+    const MPI_Comm      communicator;
+    ConditionalOStream  pcout;
+    mutable TimerOutput timer;
+
+    Parameters::Geometry         geometry;
+    Parameters::Material         material;
+    Parameters::FiniteElements   fe_parameters;
+    Parameters::Time             time_parameters;
+    Parameters::Output           output_parameters;
+    ProblemData<dim>             problem_data;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<FEZone<dim>>              fe_zone;
+    std::unique_ptr<FEOutput<dim>>            fe_output;
+    std::unique_ptr<EnergyHistory>            energy_history;
+    std::vector<typename FEZone<dim>::PrescribedDoF> prescribed_dofs;
+    bool                                             any_work_done = false;
+
+    VectorType   displacement, velocity, acceleration;
+    VectorType   internal_force, applied_force, previous_applied_force, previous_displacement;
+    double       time               = 0.;
+    unsigned int step               = 0;
+    double       stable_time_step   = 0.;
+    double       external_work      = 0.;
+    Timer        wall_clock;
+    double       last_progress_time = 0.;
+  };
+} // namespace PeriArlequin
+
+#endif

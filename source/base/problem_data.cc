@@ -1,0 +1,187 @@
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/problem_data.h>
+
+#include <deal.II/base/utilities.h>
+
+namespace PeriArlequin
+{
+  namespace
+  {
+    /** Default expression "0; 0[; 0]" for a dim-component function. */
+    template <int dim>
+    std::string
+    zero_expression()
+    {
+      std::string s = "0";
+      for (unsigned int d = 1; d < dim; ++d)
+        s += "; 0";
+      return s;
+    }
+
+    /** True if every component expression is a number equal to zero. */
+    bool
+    is_zero_expression(const std::string &expression)
+    {
+      for (const std::string &component : Utilities::split_string_list(expression, ';'))
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(component.c_str(), &end);
+          if (end == component.c_str() || *end != '\0' || value != 0.)
+            return false;
+        }
+      return true;
+    }
+
+    /** The three entries that ParsedFunction reads, documented for this function. */
+    template <int dim>
+    void
+    declare_function(ParameterHandler &prm, const std::string &name, const std::string &doc)
+    {
+      prm.enter_subsection(name);
+      prm.declare_entry("Function expression",
+                        zero_expression<dim>(),
+                        Patterns::Anything(),
+                        doc + " One muparser expression per component, separated by ';'.");
+      prm.declare_entry("Function constants",
+                        "",
+                        Patterns::Anything(),
+                        "Named constants used in the expression, e.g. 'a1=3e-4, w1=0.48' "
+                        "(pi is predefined).");
+      prm.declare_entry("Variable names",
+                        dim == 2 ? "x,y,t" : "x,y,z,t",
+                        Patterns::Anything(),
+                        "Names of the coordinates and of time in the expression.");
+      prm.leave_subsection();
+    }
+
+    /** Parse a ParsedFunction, turning a parser failure into an error naming the entry. */
+    template <int dim>
+    void
+    parse_function(ParameterHandler               &prm,
+                   const std::string              &path,
+                   const std::string              &name,
+                   Functions::ParsedFunction<dim> &function)
+    {
+      prm.enter_subsection(name);
+      const std::string expression = prm.get("Function expression");
+      const std::string constants  = prm.get("Function constants");
+      const std::string entry      = path + name + "/Function expression";
+      if (Utilities::split_string_list(expression, ';').size() != static_cast<std::size_t>(dim))
+        {
+          prm.leave_subsection();
+          throw_invalid_parameter(entry,
+                                  expression,
+                                  std::to_string(dim) + " expressions separated by ';', one per "
+                                                        "component");
+        }
+      try
+        {
+          function.parse_parameters(prm);
+        }
+      catch (const std::exception &error)
+        {
+          prm.leave_subsection();
+          throw_invalid_parameter(entry,
+                                  expression,
+                                  "a valid muparser expression in the 'Variable names' and the "
+                                  "'Function constants' ('" +
+                                    constants + "'). The parser said: " + error.what());
+        }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+  template <int dim>
+  ProblemData<dim>::ProblemData()
+    : initial_displacement(dim)
+    , initial_velocity(dim)
+    , body_force(dim)
+  {}
+
+  template <int dim>
+  void
+  ProblemData<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    declare_function<dim>(prm, "Displacement", "Initial displacement u(x, 0) [m].");
+    declare_function<dim>(prm, "Velocity", "Initial velocity v(x, 0) [m/s].");
+    prm.leave_subsection();
+
+    declare_function<dim>(prm, "Body force", "Body force per unit volume b(x, t) [N/m^3].");
+
+    prm.enter_subsection("Boundary conditions");
+    for (unsigned int b = 0; b < n_boundaries; ++b)
+      {
+        prm.enter_subsection("Boundary " + std::to_string(b));
+        prm.declare_entry("Type",
+                          "free",
+                          Patterns::Selection("free|displacement|traction"),
+                          "Condition on boundary id " + std::to_string(b) +
+                            " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
+                            "traction), displacement (prescribed components) or traction.");
+        prm.declare_entry("Components",
+                          dim == 2 ? "x, y" : "x, y, z",
+                          Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
+                          "Components whose displacement is prescribed (Type = displacement).");
+        declare_function<dim>(prm,
+                              "Function",
+                              "Prescribed displacement [m] (Type = displacement) or traction "
+                              "[Pa] (Type = traction) as a function of position and time.");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  ProblemData<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    parse_function(prm, "Initial conditions/", "Displacement", initial_displacement);
+    parse_function(prm, "Initial conditions/", "Velocity", initial_velocity);
+    prm.leave_subsection();
+
+    parse_function(prm, "", "Body force", body_force);
+    prm.enter_subsection("Body force");
+    has_body_force = !is_zero_expression(prm.get("Function expression"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    for (unsigned int b = 0; b < n_boundaries; ++b)
+      {
+        const std::string name = "Boundary " + std::to_string(b);
+        prm.enter_subsection(name);
+        BoundaryCondition<dim> &condition = boundary_conditions[b];
+        const std::string       type      = prm.get("Type");
+        condition.type = type == "free"         ? BoundaryType::free :
+                         type == "displacement" ? BoundaryType::displacement :
+                                                  BoundaryType::traction;
+        std::vector<bool> mask(dim, false);
+        for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
+          mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
+        condition.components = ComponentMask(mask);
+        if (condition.type == BoundaryType::displacement && condition.components.n_selected_components() == 0)
+          throw_invalid_parameter("Boundary conditions/" + name + "/Components",
+                                  prm.get("Components"),
+                                  "at least one of x, y" + std::string(dim == 3 ? ", z" : "") +
+                                    " for a displacement condition");
+        condition.function = std::make_unique<Functions::ParsedFunction<dim>>(dim);
+        parse_function(prm, "Boundary conditions/" + name + "/", "Function", *condition.function);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  ProblemData<dim>::has_tractions() const
+  {
+    for (const auto &condition : boundary_conditions)
+      if (condition.type == BoundaryType::traction)
+        return true;
+    return false;
+  }
+
+  template class ProblemData<2>;
+  template class ProblemData<3>;
+} // namespace PeriArlequin

@@ -1,0 +1,372 @@
+#include <periarlequin/fe/fe_zone.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <cmath>
+#include <map>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  FEZone<dim>::FEZone(const parallel::distributed::Triangulation<dim> &triangulation,
+                      const Parameters::FiniteElements                &fe_parameters,
+                      const Parameters::Material                      &material)
+    : triangulation(triangulation)
+    , material(material)
+    , communicator(triangulation.get_communicator())
+    , mapping(1)
+    , dof_handler(triangulation)
+  {
+    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(fe_parameters.degree), dim));
+    fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), dim));
+    for (unsigned int i = 0; i < fe_collection.size(); ++i)
+      {
+        cell_quadrature.push_back(QGauss<dim>(fe_parameters.degree + 1));
+        face_quadrature.push_back(QGauss<dim - 1>(fe_parameters.degree + 1));
+      }
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::setup(const Function<dim> &blending_weight, const CellPredicate &in_fe_zone)
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        cell->set_active_fe_index(in_fe_zone(cell) ? 0 : 1);
+    dof_handler.distribute_dofs(fe_collection);
+    locally_owned_dofs    = dof_handler.locally_owned_dofs();
+    locally_relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
+                                               locally_owned_dofs,
+                                               locally_relevant_dofs,
+                                               communicator);
+    DoFTools::make_sparsity_pattern(dof_handler, sparsity);
+    sparsity.compress();
+    stiffness_matrix.reinit(sparsity);
+    initialize_vector(mass);
+    assemble_mass_and_stiffness(blending_weight);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::assemble_mass_and_stiffness(const Function<dim> &blending_weight)
+  {
+    const double lambda = material.effective_lambda(dim);
+    const double mu     = material.shear_modulus();
+    const double rho    = material.density;
+
+    hp::FEValues<dim>                    hp_fe_values(fe_collection,
+                                   cell_quadrature,
+                                   update_values | update_gradients | update_quadrature_points |
+                                     update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_mass;
+    std::vector<types::global_dof_index> dof_indices;
+    std::vector<SymmetricTensor<2, dim>> strain;
+    std::vector<double>                  divergence;
+    AffineConstraints<double>            no_constraints;
+    no_constraints.close();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        hp_fe_values.reinit(cell);
+        const FEValues<dim> &fe_values     = hp_fe_values.get_present_fe_values();
+        const unsigned int   dofs_per_cell = fe_values.dofs_per_cell;
+        cell_matrix.reinit(dofs_per_cell, dofs_per_cell);
+        cell_mass.reinit(dofs_per_cell);
+        strain.resize(dofs_per_cell);
+        divergence.resize(dofs_per_cell);
+
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double weight = blending_weight.value(fe_values.quadrature_point(q)) *
+                                  fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
+                divergence[i] = trace(strain[i]);
+                // Row sum of the consistent mass: FE_Q shape functions sum to one.
+                cell_mass(i) += rho * fe_values.shape_value(i, q) * weight;
+              }
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) +=
+                  (lambda * divergence[i] * divergence[j] + 2. * mu * (strain[i] * strain[j])) *
+                  weight;
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+
+        dof_indices.resize(dofs_per_cell);
+        cell->get_dof_indices(dof_indices);
+        no_constraints.distribute_local_to_global(cell_matrix,
+                                                  cell_mass,
+                                                  dof_indices,
+                                                  stiffness_matrix,
+                                                  mass);
+      }
+    stiffness_matrix.compress(VectorOperation::add);
+    mass.compress(VectorOperation::add);
+
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      AssertThrow(mass.local_element(i) > 0,
+                  ExcMessage("An FE degree of freedom has a non-positive lumped mass (" +
+                             std::to_string(mass.local_element(i)) +
+                             "): the blending weight alpha must be positive somewhere on the "
+                             "support of every FE node."));
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::initialize_vector(VectorType &vector) const
+  {
+    vector.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::compute_internal_force(const VectorType &displacement, VectorType &force) const
+  {
+    stiffness_matrix.vmult(force, displacement);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::compute_external_force(const ProblemData<dim> &data,
+                                      const double            time,
+                                      VectorType             &force) const
+  {
+    force = 0.;
+    if (!data.has_body_force && !data.has_tractions())
+      return;
+
+    const UpdateFlags flags = update_values | update_quadrature_points | update_JxW_values;
+    hp::FEValues<dim>     hp_fe_values(fe_collection, cell_quadrature, flags);
+    hp::FEFaceValues<dim> hp_face_values(fe_collection, face_quadrature, flags);
+    Vector<double>        cell_force;
+    Vector<double>        load(dim);
+    std::vector<types::global_dof_index> dof_indices;
+    auto &body_force = const_cast<Functions::ParsedFunction<dim> &>(data.body_force);
+    body_force.set_time(time);
+
+    const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          function.vector_value(values.quadrature_point(q), load);
+          for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
+            {
+              const unsigned int c = values.get_fe().system_to_component_index(i).first;
+              cell_force(i) += load(c) * values.shape_value(i, q) * values.JxW(q);
+            }
+        }
+    };
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        cell_force.reinit(cell->get_fe().n_dofs_per_cell());
+        if (data.has_body_force)
+          {
+            hp_fe_values.reinit(cell);
+            add_load(hp_fe_values.get_present_fe_values(), body_force);
+          }
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              const auto &condition = data.boundary_conditions[cell->face(f)->boundary_id()];
+              if (condition.type != BoundaryType::traction)
+                continue;
+              condition.function->set_time(time);
+              hp_face_values.reinit(cell, f);
+              add_load(hp_face_values.get_present_fe_values(), *condition.function);
+            }
+        dof_indices.resize(cell_force.size());
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          force(dof_indices[i]) += cell_force(i);
+      }
+    force.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::interpolate(const Function<dim> &function, VectorType &vector) const
+  {
+    VectorTools::interpolate(dof_handler, function, vector);
+  }
+
+  template <int dim>
+  std::vector<typename FEZone<dim>::PrescribedDoF>
+  FEZone<dim>::prescribed_dofs(const ProblemData<dim> &data) const
+  {
+    std::map<types::global_dof_index, PrescribedDoF> found;
+    std::vector<types::global_dof_index>             dof_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0 ||
+            !cell->at_boundary())
+          continue;
+        const FiniteElement<dim> &fe = cell->get_fe();
+        dof_indices.resize(fe.n_dofs_per_cell());
+        cell->get_dof_indices(dof_indices);
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->at_boundary(f))
+              continue;
+            const unsigned int id = cell->face(f)->boundary_id();
+            AssertThrow(id < data.boundary_conditions.size(), ExcInternalError());
+            const auto &condition = data.boundary_conditions[id];
+            if (condition.type != BoundaryType::displacement)
+              continue;
+            // Face f of the reference cell lies at x_{f/2} = f%2.
+            const unsigned int direction = f / 2;
+            const double       side      = f % 2;
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const Point<dim>  &unit      = fe.get_unit_support_points()[i];
+                const unsigned int component = fe.system_to_component_index(i).first;
+                if (std::abs(unit[direction] - side) > 1e-12 ||
+                    !condition.components[component] ||
+                    !locally_owned_dofs.is_element(dof_indices[i]))
+                  continue;
+                found[dof_indices[i]] = {
+                  static_cast<unsigned int>(locally_owned_dofs.index_within_set(dof_indices[i])),
+                  component,
+                  id,
+                  mapping.transform_unit_to_real_cell(cell, unit)};
+              }
+          }
+      }
+    std::vector<PrescribedDoF> result;
+    for (const auto &entry : found)
+      result.push_back(entry.second);
+    return result;
+  }
+
+  namespace
+  {
+    /**
+     * Pseudo-random signs hashed from a point and a component: a start vector for power
+     * iterations that is rich in the highest (checkerboard) modes and the same whatever the
+     * partition of the mesh.
+     */
+    template <int dim>
+    class HashedSigns : public Function<dim>
+    {
+    public:
+      HashedSigns()
+        : Function<dim>(dim)
+      {}
+
+      double
+      value(const Point<dim> &p, const unsigned int component) const override
+      {
+        double h = 4.1414 * component;
+        for (unsigned int d = 0; d < dim; ++d)
+          h += (12.9898 + 65.2 * d) * p[d] / (1. + std::abs(p[d]));
+        h = std::sin(h * 437.585453) * 43758.5453;
+        return h - std::floor(h) < 0.5 ? -1. : 1.;
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  double
+  FEZone<dim>::estimate_stable_time_step(const unsigned int max_iterations) const
+  {
+    VectorType x, y, z, inverse_sqrt_mass;
+    initialize_vector(x);
+    initialize_vector(y);
+    initialize_vector(z);
+    initialize_vector(inverse_sqrt_mass);
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      inverse_sqrt_mass.local_element(i) = 1. / std::sqrt(mass.local_element(i));
+
+    interpolate(HashedSigns<dim>(), x);
+    x /= x.l2_norm();
+    double eigenvalue = 0.;
+    for (unsigned int it = 0; it < max_iterations; ++it)
+      {
+        // y = M^-1/2 K M^-1/2 x with |x| = 1; the Rayleigh quotient x.y rises to lambda_max.
+        z = x;
+        z.scale(inverse_sqrt_mass);
+        stiffness_matrix.vmult(y, z);
+        y.scale(inverse_sqrt_mass);
+        const double rayleigh = x * y;
+        const bool   converged = std::abs(rayleigh - eigenvalue) <= 1e-6 * rayleigh;
+        eigenvalue             = rayleigh;
+        x                      = y;
+        x /= x.l2_norm();
+        if (converged)
+          break;
+      }
+    AssertThrow(eigenvalue > 0,
+                ExcMessage("The stable time step estimate found no positive eigenvalue of "
+                           "M^-1 K: the FE zone has no stiffness."));
+    return 2. / std::sqrt(eigenvalue);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::kinetic_energy(const VectorType &velocity) const
+  {
+    double local = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      local += mass.local_element(i) * velocity.local_element(i) * velocity.local_element(i);
+    return 0.5 * Utilities::MPI::sum(local, communicator);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::strain_energy(const VectorType &displacement, const VectorType &internal_force) const
+  {
+    return 0.5 * (displacement * internal_force);
+  }
+
+  template <int dim>
+  const DoFHandler<dim> &
+  FEZone<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+  template <int dim>
+  const typename FEZone<dim>::VectorType &
+  FEZone<dim>::lumped_mass() const
+  {
+    return mass;
+  }
+
+  template <int dim>
+  const Parameters::Material &
+  FEZone<dim>::get_material() const
+  {
+    return material;
+  }
+
+  template <int dim>
+  types::global_dof_index
+  FEZone<dim>::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+  template class FEZone<2>;
+  template class FEZone<3>;
+} // namespace PeriArlequin

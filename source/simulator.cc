@@ -1,0 +1,339 @@
+#include <periarlequin/simulator.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the run (2: plane stress or plane strain, 3).");
+    Parameters::Geometry::declare_parameters(prm);
+    Parameters::Material::declare_parameters(prm);
+    Parameters::FiniteElements::declare_parameters(prm);
+    Parameters::Time::declare_parameters(prm);
+    Parameters::Output::declare_parameters(prm);
+    ProblemData<dim>::declare_parameters(prm);
+  }
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm communicator)
+    : communicator(communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+    , timer(communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , triangulation(communicator)
+  {
+    AssertThrow(prm.get_integer("Dimension") == dim,
+                ExcMessage("The parameters declare Dimension = " + prm.get("Dimension") +
+                           " but are run by a " + std::to_string(dim) + "D simulator."));
+    geometry.parse_parameters(prm, dim);
+    material.parse_parameters(prm);
+    fe_parameters.parse_parameters(prm);
+    time_parameters.parse_parameters(prm);
+    output_parameters.parse_parameters(prm);
+    problem_data.parse_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::setup()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    Point<dim>                p1, p2;
+    std::vector<unsigned int> cells(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        p1[d]    = geometry.lower_corner[d];
+        p2[d]    = geometry.upper_corner[d];
+        cells[d] = geometry.subdivisions[d];
+      }
+    GridGenerator::subdivided_hyper_rectangle(triangulation, cells, p1, p2, true);
+    triangulation.refine_global(geometry.global_refinements);
+
+    fe_zone = std::make_unique<FEZone<dim>>(triangulation, fe_parameters, material);
+    fe_zone->setup(Functions::ConstantFunction<dim>(1., dim), [](const auto &) { return true; });
+    prescribed_dofs = fe_zone->prescribed_dofs(problem_data);
+    any_work_done   = problem_data.has_body_force || problem_data.has_tractions() ||
+                    Utilities::MPI::logical_or(!prescribed_dofs.empty(), communicator);
+
+    for (VectorType *v : {&displacement,
+                          &velocity,
+                          &acceleration,
+                          &internal_force,
+                          &applied_force,
+                          &previous_applied_force,
+                          &previous_displacement})
+      fe_zone->initialize_vector(*v);
+
+    stable_time_step = fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
+    const double dt  = time_parameters.time_step;
+    if (dt > stable_time_step)
+      {
+        std::ostringstream allowed;
+        allowed << "a value <= the estimated stable step " << stable_time_step
+                << " s (2/sqrt(lambda_max(M^-1 K)) of this mesh and material)";
+        std::ostringstream value;
+        value << dt;
+        throw_invalid_parameter("Time/Time step", value.str(), allowed.str());
+      }
+
+    time = 0.;
+    step = 0;
+    problem_data.initial_displacement.set_time(0.);
+    problem_data.initial_velocity.set_time(0.);
+    fe_zone->interpolate(problem_data.initial_displacement, displacement);
+    fe_zone->interpolate(problem_data.initial_velocity, velocity);
+    apply_prescribed_motion(time);
+    compute_accelerations(time);
+    external_work = 0.;
+
+    if (output_parameters.output_interval > 0 || output_parameters.energy_interval > 0)
+      {
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::filesystem::create_directories(output_parameters.directory);
+        MPI_Barrier(communicator);
+      }
+    energy_history = std::make_unique<EnergyHistory>(
+      std::vector<std::string>{
+        "step", "time", "kinetic_energy", "strain_energy", "external_work", "total_energy"},
+      output_parameters.energy_interval > 0 ?
+        output_parameters.directory + "/" + output_parameters.base_name + "_energy.csv" :
+        std::string(),
+      communicator);
+    fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
+
+    pcout << "PeriArlequin " << dim << "D"
+          << (dim == 2 ? (material.planar_model == Parameters::PlanarModel::plane_stress ?
+                            " (plane stress)" :
+                            " (plane strain)") :
+                         "")
+          << ": " << triangulation.n_global_active_cells() << " cells, " << fe_zone->n_dofs()
+          << " FE DoFs on " << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)\n"
+          << "  time step " << dt << " s, estimated stable step " << stable_time_step
+          << " s, longitudinal wave speed " << material.longitudinal_wave_speed(dim)
+          << " m/s" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_prescribed_motion(const double t)
+  {
+    const double dt = time_parameters.time_step;
+    for (const auto &prescribed : prescribed_dofs)
+      {
+        auto &function = *problem_data.boundary_conditions[prescribed.boundary_id].function;
+        const auto value = [&](const double at) {
+          function.set_time(at);
+          return function.value(prescribed.location, prescribed.component);
+        };
+        const double before = value(t - dt), now = value(t), after = value(t + dt);
+        displacement.local_element(prescribed.local_index) = now;
+        velocity.local_element(prescribed.local_index)     = (after - before) / (2. * dt);
+        acceleration.local_element(prescribed.local_index) =
+          (after - 2. * now + before) / (dt * dt);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_accelerations(const double t)
+  {
+    {
+      TimerOutput::Scope scope(timer, "FE internal forces");
+      fe_zone->compute_internal_force(displacement, internal_force);
+    }
+    {
+      TimerOutput::Scope scope(timer, "FE external forces");
+      fe_zone->compute_external_force(problem_data, t, applied_force);
+    }
+    const VectorType &mass = fe_zone->lumped_mass();
+    // Prescribed DoFs keep their prescribed acceleration; save it across the free update.
+    std::vector<double> prescribed_acceleration;
+    for (const auto &prescribed : prescribed_dofs)
+      prescribed_acceleration.push_back(acceleration.local_element(prescribed.local_index));
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      acceleration.local_element(i) =
+        (applied_force.local_element(i) - internal_force.local_element(i)) / mass.local_element(i);
+    // On prescribed DoFs the applied force includes the support reaction M a + K u - F_ext.
+    for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
+      {
+        const unsigned int i            = prescribed_dofs[k].local_index;
+        acceleration.local_element(i)  = prescribed_acceleration[k];
+        applied_force.local_element(i) = mass.local_element(i) * prescribed_acceleration[k] +
+                                         internal_force.local_element(i);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::advance()
+  {
+    const double dt = time_parameters.time_step;
+    if (any_work_done)
+      {
+        previous_displacement  = displacement;
+        previous_applied_force = applied_force;
+      }
+
+    displacement.add(dt, velocity, 0.5 * dt * dt, acceleration);
+    velocity.add(0.5 * dt, acceleration);
+    time += dt;
+    ++step;
+    apply_prescribed_motion(time);
+    compute_accelerations(time);
+    velocity.add(0.5 * dt, acceleration);
+    // Prescribed DoFs take the prescribed velocity, not the integrated one.
+    apply_prescribed_motion(time);
+
+    if (any_work_done)
+      {
+        // Trapezoidal work of loads and support reactions over the step.
+        previous_applied_force += applied_force;
+        previous_displacement.sadd(-1., displacement);
+        external_work += 0.5 * (previous_applied_force * previous_displacement);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::record_energies()
+  {
+    TimerOutput::Scope scope(timer, "energies");
+    const double kinetic = fe_zone->kinetic_energy(velocity);
+    const double strain  = fe_zone->strain_energy(displacement, internal_force);
+    energy_history->add_row({static_cast<double>(step),
+                             time,
+                             kinetic,
+                             strain,
+                             external_work,
+                             kinetic + strain - external_work});
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_output()
+  {
+    TimerOutput::Scope scope(timer, "output");
+    fe_output->write(step, time, displacement, velocity);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::report_progress(const unsigned int n_steps, const bool force)
+  {
+    const double wall = wall_clock.wall_time();
+    if (output_parameters.progress_interval <= 0 ||
+        (!force && wall - last_progress_time < output_parameters.progress_interval))
+      return;
+    last_progress_time = wall;
+    const double remaining = step > 0 ? wall * (n_steps - step) / step : 0.;
+    pcout << "  step " << step << "/" << n_steps << ", t = " << std::setprecision(4)
+          << std::scientific << time << " s, wall " << std::fixed << std::setprecision(1)
+          << wall << " s, about " << remaining << " s to go" << std::defaultfloat
+          << std::setprecision(6) << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    if (!fe_zone)
+      setup();
+    const auto n_steps = static_cast<unsigned int>(
+      std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
+    const auto due = [&](const unsigned int interval) {
+      return interval > 0 && (step % interval == 0 || step == n_steps);
+    };
+
+    if (due(output_parameters.energy_interval))
+      record_energies();
+    if (due(output_parameters.output_interval))
+      write_output();
+
+    wall_clock.restart();
+    while (step < n_steps)
+      {
+        advance();
+        if (due(output_parameters.energy_interval))
+          record_energies();
+        if (due(output_parameters.output_interval))
+          write_output();
+        report_progress(n_steps, step == n_steps);
+      }
+    const double loop_time = wall_clock.wall_time();
+    pcout << "Time loop: " << n_steps << " steps in " << loop_time << " s, "
+          << static_cast<double>(fe_zone->n_dofs()) * n_steps / loop_time
+          << " FE DoF-steps/s" << std::endl;
+    if (output_parameters.print_timing)
+      timer.print_wall_time_statistics(communicator);
+  }
+
+  template <int dim>
+  const FEZone<dim> &
+  Simulator<dim>::get_fe_zone() const
+  {
+    return *fe_zone;
+  }
+
+  template <int dim>
+  const ProblemData<dim> &
+  Simulator<dim>::get_problem_data() const
+  {
+    return problem_data;
+  }
+
+  template <int dim>
+  const EnergyHistory &
+  Simulator<dim>::get_energy_history() const
+  {
+    return *energy_history;
+  }
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_displacement() const
+  {
+    return displacement;
+  }
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_velocity() const
+  {
+    return velocity;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_time() const
+  {
+    return time;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_time_step() const
+  {
+    return time_parameters.time_step;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_stable_time_step() const
+  {
+    return stable_time_step;
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace PeriArlequin

@@ -1,0 +1,158 @@
+#ifndef periarlequin_tests_h
+#define periarlequin_tests_h
+
+// Helpers shared by the verification tests. A test asserts its physics itself: check() writes
+// a deterministic line (the verdict and the tolerance, not noisy digits) to the file "output"
+// that the test suite compares with the stored .output, prints the measured figures on stdout
+// (kept beside it, shown when a test fails), and throws when the measured value is off.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/base/function.h>
+
+#include <periarlequin/simulator.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace PeriArlequinTests
+{
+  using namespace dealii;
+
+  /** Build a simulator from parameter text; entries not given keep their defaults. */
+  template <int dim>
+  std::unique_ptr<PeriArlequin::Simulator<dim>>
+  make_simulator(const std::string &parameters, const MPI_Comm communicator = MPI_COMM_WORLD)
+  {
+    ParameterHandler prm;
+    PeriArlequin::Simulator<dim>::declare_parameters(prm);
+    prm.parse_input_from_string(parameters);
+    return std::make_unique<PeriArlequin::Simulator<dim>>(prm, communicator);
+  }
+
+  /** Parameter text that silences files and progress: the deterministic test mode. */
+  inline std::string
+  quiet_output()
+  {
+    return "subsection Output\n"
+           "  set Directory = test_output\n"
+           "  set Output interval = 0\n"
+           "  set Energy interval = 1\n"
+           "  set Progress interval = 0\n"
+           "  set Print timing summary = false\n"
+           "end\n";
+  }
+
+  inline bool
+  is_root()
+  {
+    return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
+  /** The verdict file on rank 0. */
+  inline std::ostream &
+  verdicts()
+  {
+    static std::ofstream file(is_root() ? "output" : "/dev/null");
+    return file;
+  }
+
+  /** Measured figures for a human reader, on rank 0. */
+  inline void
+  report(const std::string &what, const double value)
+  {
+    if (is_root())
+      std::cout << what << " = " << std::setprecision(10) << value << std::endl;
+  }
+
+  /** Assert |measured - expected| <= tolerance (absolute), printing the verdict. */
+  inline void
+  check(const std::string &what,
+        const double       measured,
+        const double       expected,
+        const double       tolerance)
+  {
+    const bool ok = std::abs(measured - expected) <= tolerance;
+    report(what + " (measured)", measured);
+    report(what + " (expected)", expected);
+    verdicts() << what << ": " << (ok ? "within" : "OUTSIDE") << " tolerance " << tolerance
+               << std::endl;
+    if (!ok)
+      {
+        std::ostringstream message;
+        message << what << ": measured " << measured << ", expected " << expected
+                << " +- " << tolerance;
+        throw std::runtime_error(message.str());
+      }
+  }
+
+  /** Assert measured < bound, printing the verdict. */
+  inline void
+  check_below(const std::string &what, const double measured, const double bound)
+  {
+    const bool ok = measured < bound;
+    report(what + " (measured)", measured);
+    verdicts() << what << ": " << (ok ? "below" : "NOT below") << " " << bound << std::endl;
+    if (!ok)
+      {
+        std::ostringstream message;
+        message << what << ": measured " << measured << ", not below " << bound;
+        throw std::runtime_error(message.str());
+      }
+  }
+  /**
+   * For each DoF of the FE zone, the coordinate along its own component direction (x for
+   * x-displacement DoFs...) and, in @p is_x_component, 1 for x-displacement DoFs, else 0.
+   */
+  template <int dim>
+  void
+  dof_coordinates(const PeriArlequin::FEZone<dim>               &fe_zone,
+                  LinearAlgebra::distributed::Vector<double> &coordinate,
+                  LinearAlgebra::distributed::Vector<double> &is_x_component)
+  {
+    fe_zone.initialize_vector(coordinate);
+    fe_zone.initialize_vector(is_x_component);
+    class Position : public Function<dim>
+    {
+    public:
+      Position()
+        : Function<dim>(dim)
+      {}
+      double
+      value(const Point<dim> &p, const unsigned int c) const override
+      {
+        return p[c];
+      }
+    };
+    fe_zone.interpolate(Position(), coordinate);
+    Vector<double> unit_x(dim);
+    unit_x(0) = 1;
+    fe_zone.interpolate(Functions::ConstantFunction<dim>(unit_x), is_x_component);
+  }
+  /** Run a test body under MPI; a failed check or any error gives exit code 1. */
+  template <typename Body>
+  int
+  run_test(int argc, char **argv, const Body &body)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    try
+      {
+        body();
+      }
+    catch (const std::exception &error)
+      {
+        std::cerr << "Test failed: " << error.what() << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace PeriArlequinTests
+
+#endif
