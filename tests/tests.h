@@ -136,6 +136,21 @@ namespace PeriArlequinTests
     unit_x(0) = 1;
     fe_zone.interpolate(Functions::ConstantFunction<dim>(unit_x), is_x_component);
   }
+  /** Assert measured > bound, printing the verdict. */
+  inline void
+  check_above(const std::string &what, const double measured, const double bound)
+  {
+    const bool ok = measured > bound;
+    report(what + " (measured)", measured);
+    verdicts() << what << ": " << (ok ? "above" : "NOT above") << " " << bound << std::endl;
+    if (!ok)
+      {
+        std::ostringstream message;
+        message << what << ": measured " << measured << ", not above " << bound;
+        throw std::runtime_error(message.str());
+      }
+  }
+
   /** Run a test body under MPI; a failed check or any error gives exit code 1. */
   template <typename Body>
   int
