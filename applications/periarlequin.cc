@@ -86,7 +86,14 @@ main(int argc, char **argv)
       else
         run<3>(first);
     }
-  catch (std::exception &error)
+  catch (const ExceptionBase &error)
+    {
+      // The message alone: input errors are for users, not a stack trace.
+      std::cerr << "\nError:\n";
+      error.print_info(std::cerr);
+      return 1;
+    }
+  catch (const std::exception &error)
     {
       std::cerr << "\nError: " << error.what() << std::endl;
       return 1;

@@ -30,7 +30,7 @@ namespace PeriArlequin
   Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm communicator)
     : communicator(communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
-    , timer(communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator)
   {
     AssertThrow(prm.get_integer("Dimension") == dim,

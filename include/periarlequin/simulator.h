@@ -82,7 +82,8 @@ namespace PeriArlequin
 
     const MPI_Comm      communicator;
     ConditionalOStream  pcout;
-    mutable TimerOutput timer;
+    /** Local timings; statistics over ranks are gathered at the end of run(). */
+    TimerOutput         timer;
 
     Parameters::Geometry         geometry;
     Parameters::Material         material;

@@ -2,6 +2,7 @@
 #include <periarlequin/base/problem_data.h>
 
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 
 namespace PeriArlequin
 {
@@ -77,15 +78,21 @@ namespace PeriArlequin
       try
         {
           function.parse_parameters(prm);
+          // The parser compiles lazily: evaluate once so that a syntax error shows here.
+          Vector<double> values(dim);
+          function.vector_value(Point<dim>(), values);
         }
-      catch (const std::exception &error)
+      catch (const ExceptionBase &error)
         {
           prm.leave_subsection();
+          std::ostringstream parser_message;
+          error.print_info(parser_message);
           throw_invalid_parameter(entry,
                                   expression,
                                   "a valid muparser expression in the 'Variable names' and the "
                                   "'Function constants' ('" +
-                                    constants + "'). The parser said: " + error.what());
+                                    constants + "'). " +
+                                    Utilities::trim(parser_message.str()));
         }
       prm.leave_subsection();
     }
