@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace PeriArlequin
@@ -23,6 +24,7 @@ namespace PeriArlequin
     Parameters::FiniteElements::declare_parameters(prm);
     Parameters::Time::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);
+    Parameters::Peridynamics<dim>::declare_parameters(prm);
     ProblemData<dim>::declare_parameters(prm);
   }
 
@@ -41,6 +43,7 @@ namespace PeriArlequin
     fe_parameters.parse_parameters(prm);
     time_parameters.parse_parameters(prm);
     output_parameters.parse_parameters(prm);
+    pd_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
   }
 
@@ -60,28 +63,42 @@ namespace PeriArlequin
     GridGenerator::subdivided_hyper_rectangle(triangulation, cells, p1, p2, true);
     triangulation.refine_global(geometry.global_refinements);
 
-    fe_zone = std::make_unique<FEZone<dim>>(triangulation, fe_parameters, material);
-    fe_zone->setup(Functions::ConstantFunction<dim>(1., dim), [](const auto &) { return true; });
-    prescribed_dofs = fe_zone->prescribed_dofs(problem_data);
-    any_work_done   = problem_data.has_body_force || problem_data.has_tractions() ||
-                    Utilities::MPI::logical_or(!prescribed_dofs.empty(), communicator);
+    if (!pd_parameters.region.empty())
+      {
+        pd_zone =
+          std::make_unique<PDZone<dim>>(triangulation, pd_parameters, material, geometry);
+        // Balance particles x family size (and FE cells) across ranks before DoFs exist.
+        triangulation.signals.weight.connect(
+          [this](const typename Triangulation<dim>::cell_iterator &cell,
+                 const typename Triangulation<dim>::CellStatus) {
+            return pd_zone->cell_weight(cell);
+          });
+        triangulation.repartition();
+      }
+    bool has_fe_cells = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && !(pd_zone && pd_zone->contains_cell(cell)))
+        has_fe_cells = true;
+    if (Utilities::MPI::logical_or(has_fe_cells, communicator))
+      setup_fe_zone();
 
-    for (VectorType *v : {&displacement,
-                          &velocity,
-                          &acceleration,
-                          &internal_force,
-                          &applied_force,
-                          &previous_applied_force,
-                          &previous_displacement})
-      fe_zone->initialize_vector(*v);
-
-    stable_time_step = fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
     const double dt  = time_parameters.time_step;
+    stable_time_step = std::numeric_limits<double>::max();
+    if (fe_zone)
+      stable_time_step =
+        fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
+    if (pd_zone)
+      {
+        pd_zone->setup(problem_data, dt);
+        stable_time_step =
+          std::min(stable_time_step,
+                   pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
+      }
     if (dt > stable_time_step)
       {
         std::ostringstream allowed;
         allowed << "a value <= the estimated stable step " << stable_time_step
-                << " s (2/sqrt(lambda_max(M^-1 K)) of this mesh and material)";
+                << " s (2/sqrt(lambda_max(M^-1 K)) of this discretisation and material)";
         std::ostringstream value;
         value << dt;
         throw_invalid_parameter("Time/Time step", value.str(), allowed.str());
@@ -89,12 +106,15 @@ namespace PeriArlequin
 
     time = 0.;
     step = 0;
-    problem_data.initial_displacement.set_time(0.);
-    problem_data.initial_velocity.set_time(0.);
-    fe_zone->interpolate(problem_data.initial_displacement, displacement);
-    fe_zone->interpolate(problem_data.initial_velocity, velocity);
-    apply_prescribed_motion(time);
-    compute_accelerations(time);
+    if (fe_zone)
+      {
+        problem_data.initial_displacement.set_time(0.);
+        problem_data.initial_velocity.set_time(0.);
+        fe_zone->interpolate(problem_data.initial_displacement, displacement);
+        fe_zone->interpolate(problem_data.initial_velocity, velocity);
+        apply_prescribed_motion(time);
+        compute_accelerations(time);
+      }
     external_work = 0.;
 
     if (output_parameters.output_interval > 0 || output_parameters.energy_interval > 0)
@@ -104,24 +124,61 @@ namespace PeriArlequin
         MPI_Barrier(communicator);
       }
     energy_history = std::make_unique<EnergyHistory>(
-      std::vector<std::string>{
-        "step", "time", "kinetic_energy", "strain_energy", "external_work", "total_energy"},
+      std::vector<std::string>{"step",
+                               "time",
+                               "kinetic_energy",
+                               "strain_energy",
+                               "external_work",
+                               "total_energy",
+                               "fe_kinetic_energy",
+                               "fe_strain_energy",
+                               "pd_kinetic_energy",
+                               "pd_strain_energy",
+                               "broken_bonds"},
       output_parameters.energy_interval > 0 ?
         output_parameters.directory + "/" + output_parameters.base_name + "_energy.csv" :
         std::string(),
       communicator);
-    fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
+    if (fe_zone)
+      fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
 
     pcout << "PeriArlequin " << dim << "D"
           << (dim == 2 ? (material.planar_model == Parameters::PlanarModel::plane_stress ?
                             " (plane stress)" :
                             " (plane strain)") :
                          "")
-          << ": " << triangulation.n_global_active_cells() << " cells, " << fe_zone->n_dofs()
-          << " FE DoFs on " << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)\n"
+          << ": " << triangulation.n_global_active_cells() << " cells, "
+          << (fe_zone ? fe_zone->n_dofs() : 0) << " FE DoFs, "
+          << (pd_zone ? pd_zone->n_global_particles() : 0) << " PD particles ("
+          << (pd_zone ? pd_zone->n_global_bonds() : 0) << " bonds) on "
+          << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)\n"
           << "  time step " << dt << " s, estimated stable step " << stable_time_step
           << " s, longitudinal wave speed " << material.longitudinal_wave_speed(dim)
           << " m/s" << std::endl;
+    if (pd_zone && pd_parameters.fracture)
+      pcout << "  critical stretch " << pd_zone->get_critical_stretch() << std::endl;
+    setup_done = true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_fe_zone()
+  {
+    fe_zone = std::make_unique<FEZone<dim>>(triangulation, fe_parameters, material);
+    fe_zone->setup(Functions::ConstantFunction<dim>(1., dim), [this](const auto &cell) {
+      return !(pd_zone && pd_zone->contains_cell(cell));
+    });
+    prescribed_dofs = fe_zone->prescribed_dofs(problem_data);
+    any_work_done   = problem_data.has_body_force || problem_data.has_tractions() ||
+                    Utilities::MPI::logical_or(!prescribed_dofs.empty(), communicator);
+    for (VectorType *v : {&displacement,
+                          &velocity,
+                          &acceleration,
+                          &internal_force,
+                          &applied_force,
+                          &previous_applied_force,
+                          &previous_displacement})
+      fe_zone->initialize_vector(*v);
   }
 
   template <int dim>
@@ -179,23 +236,37 @@ namespace PeriArlequin
   Simulator<dim>::advance()
   {
     const double dt = time_parameters.time_step;
-    if (any_work_done)
+    if (fe_zone && any_work_done)
       {
         previous_displacement  = displacement;
         previous_applied_force = applied_force;
       }
-
-    displacement.add(dt, velocity, 0.5 * dt * dt, acceleration);
-    velocity.add(0.5 * dt, acceleration);
+    if (fe_zone)
+      {
+        displacement.add(dt, velocity, 0.5 * dt * dt, acceleration);
+        velocity.add(0.5 * dt, acceleration);
+      }
+    if (pd_zone)
+      pd_zone->predict(dt);
     time += dt;
     ++step;
-    apply_prescribed_motion(time);
-    compute_accelerations(time);
-    velocity.add(0.5 * dt, acceleration);
-    // Prescribed DoFs take the prescribed velocity, not the integrated one.
-    apply_prescribed_motion(time);
 
-    if (any_work_done)
+    if (fe_zone)
+      {
+        apply_prescribed_motion(time);
+        compute_accelerations(time);
+        velocity.add(0.5 * dt, acceleration);
+        // Prescribed DoFs take the prescribed velocity, not the integrated one.
+        apply_prescribed_motion(time);
+      }
+    if (pd_zone)
+      {
+        TimerOutput::Scope scope(timer, "PD forces");
+        pd_zone->compute_accelerations(time, problem_data);
+        pd_zone->correct(dt, time);
+      }
+
+    if (fe_zone && any_work_done)
       {
         // Trapezoidal work of loads and support reactions over the step.
         previous_applied_force += applied_force;
@@ -209,14 +280,24 @@ namespace PeriArlequin
   Simulator<dim>::record_energies()
   {
     TimerOutput::Scope scope(timer, "energies");
-    const double kinetic = fe_zone->kinetic_energy(velocity);
-    const double strain  = fe_zone->strain_energy(displacement, internal_force);
+    const double fe_kinetic = fe_zone ? fe_zone->kinetic_energy(velocity) : 0.;
+    const double fe_strain = fe_zone ? fe_zone->strain_energy(displacement, internal_force) : 0.;
+    const double pd_kinetic = pd_zone ? pd_zone->kinetic_energy() : 0.;
+    const double pd_strain  = pd_zone ? pd_zone->strain_energy() : 0.;
+    const double work   = external_work + (pd_zone ? pd_zone->external_work() : 0.);
+    const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
+    const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
     energy_history->add_row({static_cast<double>(step),
                              time,
                              kinetic,
                              strain,
-                             external_work,
-                             kinetic + strain - external_work});
+                             work,
+                             kinetic + strain - work,
+                             fe_kinetic,
+                             fe_strain,
+                             pd_kinetic,
+                             pd_strain,
+                             broken});
   }
 
   template <int dim>
@@ -224,7 +305,10 @@ namespace PeriArlequin
   Simulator<dim>::write_output()
   {
     TimerOutput::Scope scope(timer, "output");
-    fe_output->write(step, time, displacement, velocity);
+    if (fe_output)
+      fe_output->write(step, time, displacement, velocity);
+    if (pd_zone)
+      pd_zone->write_output(step, time, output_parameters.directory, output_parameters.base_name);
   }
 
   template <int dim>
@@ -247,7 +331,7 @@ namespace PeriArlequin
   void
   Simulator<dim>::run()
   {
-    if (!fe_zone)
+    if (!setup_done)
       setup();
     const auto n_steps = static_cast<unsigned int>(
       std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
@@ -271,9 +355,14 @@ namespace PeriArlequin
         report_progress(n_steps, step == n_steps);
       }
     const double loop_time = wall_clock.wall_time();
-    pcout << "Time loop: " << n_steps << " steps in " << loop_time << " s, "
-          << static_cast<double>(fe_zone->n_dofs()) * n_steps / loop_time
-          << " FE DoF-steps/s" << std::endl;
+    pcout << "Time loop: " << n_steps << " steps in " << loop_time << " s";
+    if (fe_zone)
+      pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * n_steps / loop_time
+            << " FE DoF-steps/s";
+    if (pd_zone)
+      pcout << ", " << static_cast<double>(pd_zone->n_global_bonds()) * n_steps / loop_time
+            << " PD bond-updates/s";
+    pcout << std::endl;
     if (output_parameters.print_timing)
       timer.print_wall_time_statistics(communicator);
   }
@@ -283,6 +372,20 @@ namespace PeriArlequin
   Simulator<dim>::get_fe_zone() const
   {
     return *fe_zone;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::has_fe_zone() const
+  {
+    return fe_zone != nullptr;
+  }
+
+  template <int dim>
+  PDZone<dim> *
+  Simulator<dim>::get_pd_zone()
+  {
+    return pd_zone.get();
   }
 
   template <int dim>

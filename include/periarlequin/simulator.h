@@ -12,6 +12,7 @@
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
+#include <periarlequin/pd/pd_zone.h>
 
 #include <memory>
 
@@ -20,9 +21,11 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * Runs one case described by a parameter file: builds the mesh and the zones, checks the
-   * time step against the stable step, integrates in time with velocity Verlet and writes
-   * fields, energies and progress.
+   * Runs one case described by a parameter file: builds the mesh and the zones (FE where no
+   * PD region covers a cell's centre, PD particles in the PD region), checks the time step
+   * against the stable steps of both, integrates in time with velocity Verlet and writes
+   * fields, energies and progress. The zones are not coupled yet: a case is pure FE or pure
+   * PD, or has independent FE and PD bodies.
    */
   template <int dim>
   class Simulator
@@ -49,8 +52,14 @@ namespace PeriArlequin
     void
     advance();
 
+    /** The FE zone; only valid if has_fe_zone(). */
     const FEZone<dim> &
     get_fe_zone() const;
+    bool
+    has_fe_zone() const;
+    /** The PD zone, or nullptr if the case has none. */
+    PDZone<dim> *
+    get_pd_zone();
     const ProblemData<dim> &
     get_problem_data() const;
     const EnergyHistory &
@@ -67,6 +76,8 @@ namespace PeriArlequin
     get_stable_time_step() const;
 
   private:
+    void
+    setup_fe_zone();
     /** Prescribed displacement and its central-difference velocity and acceleration. */
     void
     apply_prescribed_motion(const double time);
@@ -90,10 +101,12 @@ namespace PeriArlequin
     Parameters::FiniteElements   fe_parameters;
     Parameters::Time             time_parameters;
     Parameters::Output           output_parameters;
+    Parameters::Peridynamics<dim> pd_parameters;
     ProblemData<dim>             problem_data;
 
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FEZone<dim>>              fe_zone;
+    std::unique_ptr<PDZone<dim>>              pd_zone;
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::vector<typename FEZone<dim>::PrescribedDoF> prescribed_dofs;
@@ -104,7 +117,9 @@ namespace PeriArlequin
     double       time               = 0.;
     unsigned int step               = 0;
     double       stable_time_step   = 0.;
+    /** Work of the loads and support reactions on the FE zone. */
     double       external_work      = 0.;
+    bool         setup_done         = false;
     Timer        wall_clock;
     double       last_progress_time = 0.;
   };

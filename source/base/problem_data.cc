@@ -33,10 +33,11 @@ namespace PeriArlequin
       return true;
     }
 
-    /** The three entries that ParsedFunction reads, documented for this function. */
-    template <int dim>
-    void
-    declare_function(ParameterHandler &prm, const std::string &name, const std::string &doc)
+  } // namespace
+
+  template <int dim>
+  void
+  declare_vector_function(ParameterHandler &prm, const std::string &name, const std::string &doc)
     {
       prm.enter_subsection(name);
       prm.declare_entry("Function expression",
@@ -55,10 +56,9 @@ namespace PeriArlequin
       prm.leave_subsection();
     }
 
-    /** Parse a ParsedFunction, turning a parser failure into an error naming the entry. */
-    template <int dim>
-    void
-    parse_function(ParameterHandler               &prm,
+  template <int dim>
+  void
+  parse_vector_function(ParameterHandler               &prm,
                    const std::string              &path,
                    const std::string              &name,
                    Functions::ParsedFunction<dim> &function)
@@ -96,7 +96,6 @@ namespace PeriArlequin
         }
       prm.leave_subsection();
     }
-  } // namespace
 
   template <int dim>
   ProblemData<dim>::ProblemData()
@@ -110,11 +109,11 @@ namespace PeriArlequin
   ProblemData<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    declare_function<dim>(prm, "Displacement", "Initial displacement u(x, 0) [m].");
-    declare_function<dim>(prm, "Velocity", "Initial velocity v(x, 0) [m/s].");
+    declare_vector_function<dim>(prm, "Displacement", "Initial displacement u(x, 0) [m].");
+    declare_vector_function<dim>(prm, "Velocity", "Initial velocity v(x, 0) [m/s].");
     prm.leave_subsection();
 
-    declare_function<dim>(prm, "Body force", "Body force per unit volume b(x, t) [N/m^3].");
+    declare_vector_function<dim>(prm, "Body force", "Body force per unit volume b(x, t) [N/m^3].");
 
     prm.enter_subsection("Boundary conditions");
     for (unsigned int b = 0; b < n_boundaries; ++b)
@@ -130,7 +129,7 @@ namespace PeriArlequin
                           dim == 2 ? "x, y" : "x, y, z",
                           Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
                           "Components whose displacement is prescribed (Type = displacement).");
-        declare_function<dim>(prm,
+        declare_vector_function<dim>(prm,
                               "Function",
                               "Prescribed displacement [m] (Type = displacement) or traction "
                               "[Pa] (Type = traction) as a function of position and time.");
@@ -144,11 +143,11 @@ namespace PeriArlequin
   ProblemData<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    parse_function(prm, "Initial conditions/", "Displacement", initial_displacement);
-    parse_function(prm, "Initial conditions/", "Velocity", initial_velocity);
+    parse_vector_function(prm, "Initial conditions/", "Displacement", initial_displacement);
+    parse_vector_function(prm, "Initial conditions/", "Velocity", initial_velocity);
     prm.leave_subsection();
 
-    parse_function(prm, "", "Body force", body_force);
+    parse_vector_function(prm, "", "Body force", body_force);
     prm.enter_subsection("Body force");
     has_body_force = !is_zero_expression(prm.get("Function expression"));
     prm.leave_subsection();
@@ -173,7 +172,7 @@ namespace PeriArlequin
                                   "at least one of x, y" + std::string(dim == 3 ? ", z" : "") +
                                     " for a displacement condition");
         condition.function = std::make_unique<Functions::ParsedFunction<dim>>(dim);
-        parse_function(prm, "Boundary conditions/" + name + "/", "Function", *condition.function);
+        parse_vector_function(prm, "Boundary conditions/" + name + "/", "Function", *condition.function);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -189,6 +188,20 @@ namespace PeriArlequin
     return false;
   }
 
+  template void
+  declare_vector_function<2>(ParameterHandler &, const std::string &, const std::string &);
+  template void
+  declare_vector_function<3>(ParameterHandler &, const std::string &, const std::string &);
+  template void
+  parse_vector_function<2>(ParameterHandler &,
+                           const std::string &,
+                           const std::string &,
+                           Functions::ParsedFunction<2> &);
+  template void
+  parse_vector_function<3>(ParameterHandler &,
+                           const std::string &,
+                           const std::string &,
+                           Functions::ParsedFunction<3> &);
   template class ProblemData<2>;
   template class ProblemData<3>;
 } // namespace PeriArlequin

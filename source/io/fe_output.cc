@@ -81,6 +81,8 @@ namespace PeriArlequin
   FEOutput<dim>::FEOutput(const FEZone<dim> &fe_zone, const Parameters::Output &parameters)
     : fe_zone(fe_zone)
     , parameters(parameters)
+    , series(parameters.directory + "/" + parameters.base_name + "_fe.pvd",
+             fe_zone.get_dof_handler().get_communicator())
   {}
 
   template <int dim>
@@ -113,12 +115,7 @@ namespace PeriArlequin
     const MPI_Comm    communicator = fe_zone.get_dof_handler().get_communicator();
     const std::string name         = data_out.write_vtu_with_pvtu_record(
       parameters.directory + "/", parameters.base_name + "_fe", step, communicator, 6);
-    records.emplace_back(time, name);
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::ofstream pvd(parameters.directory + "/" + parameters.base_name + "_fe.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
-      }
+    series.add(time, name);
     displacement.zero_out_ghost_values();
     velocity.zero_out_ghost_values();
   }

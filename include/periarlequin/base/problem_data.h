@@ -12,6 +12,27 @@ namespace PeriArlequin
 {
   using namespace dealii;
 
+  /**
+   * Declare, in subsection @p name, the entries of a dim-component muparser function of
+   * (x, y[, z], t) with named constants, documented by @p documentation (give the units).
+   */
+  template <int dim>
+  void
+  declare_vector_function(ParameterHandler  &prm,
+                          const std::string &name,
+                          const std::string &documentation);
+
+  /**
+   * Parse the function declared by declare_vector_function() in subsection @p name; a
+   * malformed expression is reported with its full entry path @p path + @p name.
+   */
+  template <int dim>
+  void
+  parse_vector_function(ParameterHandler               &prm,
+                        const std::string              &path,
+                        const std::string              &name,
+                        Functions::ParsedFunction<dim> &function);
+
   /** What a boundary of the box prescribes. */
   enum class BoundaryType
   {

@@ -5,6 +5,7 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/io/pvd_series.h>
 
 #include <string>
 #include <utility>
@@ -34,7 +35,7 @@ namespace PeriArlequin
   private:
     const FEZone<dim>                        &fe_zone;
     const Parameters::Output                  parameters;
-    std::vector<std::pair<double, std::string>> records;
+    PVDSeries                                   series;
   };
 } // namespace PeriArlequin
 

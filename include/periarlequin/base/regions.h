@@ -1,0 +1,65 @@
+#ifndef periarlequin_base_regions_h
+#define periarlequin_base_regions_h
+
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /** An axis-aligned box [lower, upper]. */
+  template <int dim>
+  struct Box
+  {
+    Point<dim> lower;
+    Point<dim> upper;
+
+    bool
+    contains(const Point<dim> &p, const double tolerance = 0.) const;
+  };
+
+  /**
+   * A union of boxes, written in a parameter file as "x0, y0 : x1, y1 ; x0, y0 : x1, y1"
+   * (lower and upper corner of each box, boxes separated by ';'). Empty text is the empty set.
+   */
+  template <int dim>
+  struct Region
+  {
+    std::vector<Box<dim>> boxes;
+
+    bool
+    contains(const Point<dim> &p, const double tolerance = 0.) const;
+    bool
+    empty() const;
+
+    /** Parse the text of @p parameter (named in errors) into a region. */
+    static Region<dim>
+    parse(const std::string &text, const std::string &parameter);
+  };
+
+  /**
+   * A pre-crack: a segment in 2D ("x0, y0 : x1, y1"), a parallelogram in 3D given by a corner
+   * and two edge vectors ("x0, y0, z0 : ax, ay, az : bx, by, bz"). Bonds whose reference
+   * segment crosses it are cut at the start.
+   */
+  template <int dim>
+  struct PreCrack
+  {
+    Point<dim>     origin;
+    Tensor<1, dim> edge_a;
+    Tensor<1, dim> edge_b; // unused in 2D
+
+    /** Does the segment from @p p to @p q cross the crack? */
+    bool
+    cuts(const Point<dim> &p, const Point<dim> &q) const;
+
+    /** Parse a ';'-separated list of cracks from the text of @p parameter. */
+    static std::vector<PreCrack<dim>>
+    parse_list(const std::string &text, const std::string &parameter);
+  };
+} // namespace PeriArlequin
+
+#endif

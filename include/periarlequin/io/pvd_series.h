@@ -1,0 +1,30 @@
+#ifndef periarlequin_io_pvd_series_h
+#define periarlequin_io_pvd_series_h
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /** A .pvd record of a series of .pvtu files, rewritten on rank 0 after each addition. */
+  class PVDSeries
+  {
+  public:
+    PVDSeries(const std::string &pvd_file_name, const MPI_Comm communicator);
+
+    void
+    add(const double time, const std::string &pvtu_file_name);
+
+  private:
+    const std::string                           file_name;
+    const bool                                  writer;
+    std::vector<std::pair<double, std::string>> records;
+  };
+} // namespace PeriArlequin
+
+#endif

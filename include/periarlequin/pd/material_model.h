@@ -1,0 +1,162 @@
+#ifndef periarlequin_pd_material_model_h
+#define periarlequin_pd_material_model_h
+
+#include <deal.II/base/tensor.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/pd/bond_families.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * A peridynamic constitutive model acting on the bond families of a lattice. A model may
+   * need per-particle scalars (the LPS dilatation) of its neighbours: it computes them for
+   * owned particles in compute_particle_scalars(); the PD zone copies them to the ghosts
+   * before compute_forces(). Broken bonds (state broken) carry no force.
+   *
+   * Users add a model by deriving from this class and registering it with
+   * PERIARLEQUIN_REGISTER_PD_MATERIAL in their own source file; the parameter
+   * "Peridynamics/Material model" then accepts its name.
+   */
+  template <int dim>
+  class PDMaterialModel
+  {
+  public:
+    virtual ~PDMaterialModel() = default;
+
+    /** Material constants; called once the bond families and weighted volumes exist. */
+    virtual void
+    initialize(const Parameters::Material &material, const BondFamilies<dim> &bonds) = 0;
+
+    /** How many scalars per particle compute_forces() needs on ghost particles too. */
+    virtual unsigned int
+    n_particle_scalars() const = 0;
+
+    /** Output names of those scalars. */
+    virtual std::vector<std::string>
+    particle_scalar_names() const = 0;
+
+    /** Fill scalars[n_particle_scalars() * i + k] for every owned particle i. */
+    virtual void
+    compute_particle_scalars(const BondFamilies<dim>          &bonds,
+                             const std::vector<Tensor<1, dim>> &displacement,
+                             std::vector<double>               &scalars) const = 0;
+
+    /**
+     * Force density [N/m^3] and strain-energy density [J/m^3] of every owned particle, from
+     * the displacements and scalars of owned and ghost particles.
+     */
+    virtual void
+    compute_forces(const BondFamilies<dim>          &bonds,
+                   const std::vector<Tensor<1, dim>> &displacement,
+                   const std::vector<double>         &scalars,
+                   std::vector<Tensor<1, dim>>       &force_density,
+                   std::vector<double>               &energy_density) const = 0;
+
+    /** Critical bond stretch for the critical energy release rate G0 [J/m^2]. */
+    virtual double
+    critical_stretch(const double energy_release_rate, const double horizon) const = 0;
+  };
+
+  /** The open registry of PD material models, by name. */
+  template <int dim>
+  class PDMaterialRegistry
+  {
+  public:
+    using Creator = std::function<std::unique_ptr<PDMaterialModel<dim>>()>;
+
+    static bool
+    register_model(const std::string &name, const std::string &description, Creator creator);
+
+    static std::unique_ptr<PDMaterialModel<dim>>
+    create(const std::string &name);
+
+    /** "A|B|..." for a Patterns::Selection. */
+    static std::string
+    names();
+
+    /** One line per model: name and description. */
+    static std::string
+    documentation();
+
+  private:
+    struct Entry
+    {
+      std::string description;
+      Creator     creator;
+    };
+    static std::map<std::string, Entry> &
+    models();
+  };
+
+  /**
+   * The state-based linear peridynamic solid (LPS) in 3D and in 2D plane stress, written in
+   * one form:
+   *   theta = (c / q) sum omega x e V v,  e_d = e - theta x / 3,  beta = b / q,
+   *   W = k theta^2 / 2 + beta / 2 sum omega e_d^2 V v,
+   *   t = c (k theta - beta / 3 S) omega x / q + beta omega e_d,  S = sum omega e_d x V v,
+   * with 3D (eq. 17, 25): c = 3, k = K, b = 15 mu (S vanishes while no bond is broken), and
+   * plane stress (eq. 26-28, Le, Silling et al. 2014): c = 2 (2 nu - 1) / (nu - 1),
+   * k = K + mu (nu + 1)^2 / (9 (2 nu - 1)^2), b = 8 mu. t = dW/de / (V v), so the forces are
+   * exactly minus the derivative of the energy. omega = 1 on intact bonds, q is the weighted
+   * volume of the full initial family.
+   *
+   * Critical stretch: 3D s_c = sqrt(5 G0 / (9 K delta)) (Silling & Askari 2005); plane stress
+   * s_c = sqrt(4 pi G0 / (9 E delta)) (Ha & Bobaru 2010).
+   */
+  template <int dim>
+  class LinearPeridynamicSolid : public PDMaterialModel<dim>
+  {
+  public:
+    void
+    initialize(const Parameters::Material &material, const BondFamilies<dim> &bonds) override;
+    unsigned int
+    n_particle_scalars() const override;
+    std::vector<std::string>
+    particle_scalar_names() const override;
+    void
+    compute_particle_scalars(const BondFamilies<dim>          &bonds,
+                             const std::vector<Tensor<1, dim>> &displacement,
+                             std::vector<double>               &scalars) const override;
+    void
+    compute_forces(const BondFamilies<dim>          &bonds,
+                   const std::vector<Tensor<1, dim>> &displacement,
+                   const std::vector<double>         &scalars,
+                   std::vector<Tensor<1, dim>>       &force_density,
+                   std::vector<double>               &energy_density) const override;
+    double
+    critical_stretch(const double energy_release_rate, const double horizon) const override;
+
+  private:
+    double                      c = 0, k = 0, b = 0;
+    double                      youngs_modulus = 0, bulk_modulus = 0;
+    mutable std::vector<double> coefficients;
+  };
+} // namespace PeriArlequin
+
+/**
+ * Register a PD material model class template (instantiated for dim = 2 and 3) under @p name,
+ * e.g. PERIARLEQUIN_REGISTER_PD_MATERIAL(MyBondBasedModel, "PMB", "prototype micro-elastic").
+ */
+#define PERIARLEQUIN_REGISTER_PD_MATERIAL(classname, name, description)                      \
+  namespace                                                                                  \
+  {                                                                                          \
+    const bool periarlequin_registered_##classname##_2d =                                    \
+      PeriArlequin::PDMaterialRegistry<2>::register_model(name, description, [] {            \
+        return std::unique_ptr<PeriArlequin::PDMaterialModel<2>>(new classname<2>());        \
+      });                                                                                    \
+    const bool periarlequin_registered_##classname##_3d =                                    \
+      PeriArlequin::PDMaterialRegistry<3>::register_model(name, description, [] {            \
+        return std::unique_ptr<PeriArlequin::PDMaterialModel<3>>(new classname<3>());        \
+      });                                                                                    \
+  }
+
+#endif

@@ -1,0 +1,211 @@
+#ifndef periarlequin_pd_pd_zone_h
+#define periarlequin_pd_pd_zone_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/problem_data.h>
+#include <periarlequin/base/regions.h>
+#include <periarlequin/io/pvd_series.h>
+#include <periarlequin/pd/bond_families.h>
+#include <periarlequin/pd/material_model.h>
+
+#include <array>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    /** A particle region whose displacement or velocity is prescribed. */
+    template <int dim>
+    struct PrescribedParticleRegion
+    {
+      Region<dim>                                     region;
+      bool                                            prescribes_velocity = false;
+      ComponentMask                                   components;
+      std::unique_ptr<Functions::ParsedFunction<dim>> function;
+    };
+
+    /** The peridynamic zone: where, how fine, which model, fracture, particle conditions. */
+    template <int dim>
+    struct Peridynamics
+    {
+      static constexpr unsigned int n_prescribed_regions = 4;
+
+      Region<dim>                 region;
+      double                      lattice_spacing;
+      double                      horizon_factor;
+      std::string                 material_model;
+      bool                        fracture;
+      double                      energy_release_rate;
+      double                      critical_stretch;
+      std::vector<PreCrack<dim>>  pre_cracks;
+      Region<dim>                 no_fail_region;
+      std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
+
+      double
+      horizon() const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
+  /**
+   * The peridynamic particle zone: a regular lattice of spacing dx filling a union of boxes,
+   * held in a Particles::ParticleHandler on the simulation's triangulation at the reference
+   * positions (total Lagrangian: particles never move between cells). The owner of a
+   * particle is the owner of its cell; ghost particles (one layer of ghost cells, so cells
+   * must be at least a horizon wide) carry the displacements and model scalars of the
+   * neighbours owned elsewhere. The state lives in flat arrays indexed by a local particle
+   * number, owned particles first, then ghosts; particle properties only carry data across
+   * ranks and to output.
+   *
+   * Time integration is velocity Verlet, split so that a coupled integrator can interleave
+   * it with the FE zone: predict(), compute_accelerations(), correct().
+   */
+  template <int dim>
+  class PDZone
+  {
+  public:
+    PDZone(parallel::distributed::Triangulation<dim> &triangulation,
+           const Parameters::Peridynamics<dim>       &parameters,
+           const Parameters::Material                &material,
+           const Parameters::Geometry                &geometry);
+
+    /**
+     * Weight of a cell for load balancing: 1000 (base) plus the bond count of the lattice
+     * sites it will hold. Connect before any repartition.
+     */
+    unsigned int
+    cell_weight(const typename Triangulation<dim>::cell_iterator &cell) const;
+
+    /** Does the PD region contain the centre of @p cell? */
+    bool
+    contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
+    /** Particles, ghosts, bonds, pre-cracks, model, initial state. */
+    void
+    setup(const ProblemData<dim> &data, const double time_step);
+
+    /** u += dt v + dt^2/2 a,  v += dt/2 a (owned particles). */
+    void
+    predict(const double dt);
+    /** Bond breaking, forces and accelerations at time @p time, prescribed particles. */
+    void
+    compute_accelerations(const double time, const ProblemData<dim> &data);
+    /** v += dt/2 a, then prescribed velocities. */
+    void
+    correct(const double dt, const double time);
+
+    /**
+     * Internal force density of the current displacement (ghost exchange, model scalars,
+     * forces) without breaking bonds; fills force_density and energy_density.
+     */
+    void
+    compute_internal_forces();
+
+    /** Stable step 2/sqrt(lambda_max) of the linearised PD operator (power iterations). */
+    double
+    estimate_stable_time_step(const unsigned int max_iterations);
+
+    double
+    kinetic_energy() const;
+    double
+    strain_energy() const;
+    /** Work of body forces and of the prescribed particles' reactions since the start. */
+    double
+    external_work() const;
+    types::particle_index
+    n_global_particles() const;
+    std::size_t
+    n_global_bonds() const;
+    std::size_t
+    n_global_broken_bonds() const;
+    double
+    get_critical_stretch() const;
+
+    void
+    write_output(const unsigned int step, const double time, const std::string &directory,
+                 const std::string &base_name);
+
+    /** Flat state, owned particles [0, n_owned) then ghosts. */
+    unsigned int n_owned = 0;
+    std::vector<Point<dim>>            reference_position;
+    std::vector<types::particle_index> particle_id;
+    std::vector<Tensor<1, dim>>        displacement, velocity, acceleration;
+    std::vector<Tensor<1, dim>>        force_density;
+    std::vector<double>                energy_density;
+    std::vector<double>                model_scalars;
+    BondFamilies<dim>                  bonds;
+
+    const PDMaterialModel<dim> &
+    get_material_model() const;
+    double
+    particle_volume() const;
+
+  private:
+    void
+    generate_particles();
+    void
+    build_bonds();
+    void
+    check_horizon_covered() const;
+    /** Copy a per-particle field of owned particles to the ghosts through the particles. */
+    void
+    update_ghosts(std::vector<double> &values, const unsigned int n_per_particle);
+    void
+    update_ghost_displacements();
+    void
+    break_bonds();
+    void
+    apply_prescribed_motion(const double time);
+
+    /** Lattice index of a point (per direction) and the particle id of a lattice site. */
+    types::particle_index
+    site_id(const std::array<unsigned int, dim> &site) const;
+    Point<dim>
+    site_position(const std::array<unsigned int, dim> &site) const;
+
+    parallel::distributed::Triangulation<dim> &triangulation;
+    const Parameters::Peridynamics<dim>       &parameters;
+    const Parameters::Material                 material;
+    const MPI_Comm                             communicator;
+    MappingQ<dim>                              mapping;
+    Particles::ParticleHandler<dim>            particle_handler;
+    std::unique_ptr<PDMaterialModel<dim>>      model;
+
+    Point<dim>                   lattice_origin;
+    std::array<unsigned int, dim> n_sites;
+    double                       critical_stretch = 0;
+    double                       time_step        = 0;
+
+    struct PrescribedParticle
+    {
+      unsigned int local_index;
+      unsigned int region;
+    };
+    std::vector<PrescribedParticle> prescribed_particles;
+    /** Applied force (body force plus support reactions) of owned particles [N]. */
+    std::vector<Tensor<1, dim>>     applied_force, previous_applied_force, previous_displacement;
+    double                          work        = 0;
+    bool                            tracks_work = false;
+    bool                            step_open   = false;
+    std::vector<double>             exchange_buffer;
+    std::unique_ptr<PVDSeries>      output_series;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,850 @@
+#include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/particles/data_out.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace PeriArlequin
+{
+  namespace Parameters
+  {
+    template <int dim>
+    double
+    Peridynamics<dim>::horizon() const
+    {
+      return horizon_factor * lattice_spacing;
+    }
+
+    template <int dim>
+    void
+    Peridynamics<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Peridynamics");
+      prm.declare_entry("Region",
+                        "",
+                        Patterns::Anything(),
+                        "Union of boxes filled with PD particles, 'x0, y0 : x1, y1 ; ...' "
+                        "(lower : upper corner) [m]. Empty: no PD zone. Cells whose centre lies "
+                        "in the region carry no FE unknowns.");
+      prm.declare_entry("Lattice spacing",
+                        "0.0025",
+                        Patterns::Double(),
+                        "Spacing dx of the regular particle lattice, > 0 [m]. The lattice is "
+                        "anchored at the lower corner of the domain; a particle sits at every "
+                        "lattice cell centre inside the region.");
+      prm.declare_entry("Horizon factor",
+                        "3.015",
+                        Patterns::Double(),
+                        "m = delta / dx, the horizon in lattice spacings, >= 1 [-].");
+      prm.declare_entry("Material model",
+                        "LPS",
+                        Patterns::Anything(),
+                        "Name of a registered PD material model. Registered:" +
+                          PDMaterialRegistry<dim>::documentation());
+      prm.declare_entry("Fracture",
+                        "false",
+                        Patterns::Bool(),
+                        "Break bonds irreversibly above the critical stretch.");
+      prm.declare_entry("Critical energy release rate",
+                        "0",
+                        Patterns::Double(),
+                        "G0 [J/m^2], > 0 when Fracture is on; gives the critical stretch "
+                        "through the material model's formula.");
+      prm.declare_entry("Critical stretch",
+                        "0",
+                        Patterns::Double(0),
+                        "If > 0, the critical bond stretch [-] itself, overriding G0.");
+      prm.declare_entry("Pre-cracks",
+                        "",
+                        Patterns::Anything(),
+                        "Cracks that cut bonds at the start, separated by ';': segments "
+                        "'x0, y0 : x1, y1' in 2D, parallelograms 'corner : edge a : edge b' "
+                        "in 3D [m].");
+      prm.declare_entry("No-fail region",
+                        "",
+                        Patterns::Anything(),
+                        "Boxes 'lower : upper ; ...' [m] in which bonds never break (a bond "
+                        "with either end inside).");
+      for (unsigned int r = 0; r < n_prescribed_regions; ++r)
+        {
+          prm.enter_subsection("Prescribed region " + std::to_string(r));
+          prm.declare_entry("Region",
+                            "",
+                            Patterns::Anything(),
+                            "Boxes 'lower : upper ; ...' [m] whose particles have a prescribed "
+                            "motion (a fictitious boundary layer). Empty: unused.");
+          prm.declare_entry("Type",
+                            "displacement",
+                            Patterns::Selection("displacement|velocity"),
+                            "Whether Function gives the displacement [m] or the velocity [m/s].");
+          prm.declare_entry("Components",
+                            dim == 2 ? "x, y" : "x, y, z",
+                            Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
+                            "Prescribed components.");
+          declare_vector_function<dim>(prm,
+                                       "Function",
+                                       "Prescribed displacement [m] or velocity [m/s].");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Peridynamics<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const auto to_string = [](const double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+      };
+      prm.enter_subsection("Peridynamics");
+      region              = Region<dim>::parse(prm.get("Region"), "Peridynamics/Region");
+      lattice_spacing     = prm.get_double("Lattice spacing");
+      horizon_factor      = prm.get_double("Horizon factor");
+      material_model      = prm.get("Material model");
+      fracture            = prm.get_bool("Fracture");
+      energy_release_rate = prm.get_double("Critical energy release rate");
+      critical_stretch    = prm.get_double("Critical stretch");
+      pre_cracks = PreCrack<dim>::parse_list(prm.get("Pre-cracks"), "Peridynamics/Pre-cracks");
+      no_fail_region =
+        Region<dim>::parse(prm.get("No-fail region"), "Peridynamics/No-fail region");
+      for (unsigned int r = 0; r < n_prescribed_regions; ++r)
+        {
+          const std::string path = "Peridynamics/Prescribed region " + std::to_string(r) + "/";
+          prm.enter_subsection("Prescribed region " + std::to_string(r));
+          auto &p               = prescribed[r];
+          p.region              = Region<dim>::parse(prm.get("Region"), path + "Region");
+          p.prescribes_velocity = prm.get("Type") == "velocity";
+          std::vector<bool> mask(dim, false);
+          for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
+            mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
+          p.components = ComponentMask(mask);
+          p.function   = std::make_unique<Functions::ParsedFunction<dim>>(dim);
+          parse_vector_function(prm, path, "Function", *p.function);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      if (region.empty())
+        return;
+      if (!(lattice_spacing > 0))
+        throw_invalid_parameter("Peridynamics/Lattice spacing",
+                                to_string(lattice_spacing),
+                                "a value > 0 [m]");
+      if (!(horizon_factor >= 1))
+        throw_invalid_parameter("Peridynamics/Horizon factor",
+                                to_string(horizon_factor),
+                                "a value >= 1 (the horizon spans at least one lattice spacing)");
+      const std::string models = PDMaterialRegistry<dim>::names();
+      if (("|" + models + "|").find("|" + material_model + "|") == std::string::npos)
+        throw_invalid_parameter("Peridynamics/Material model",
+                                material_model,
+                                "one of the registered models " + models);
+      if (fracture && critical_stretch == 0 && !(energy_release_rate > 0))
+        throw_invalid_parameter("Peridynamics/Critical energy release rate",
+                                to_string(energy_release_rate),
+                                "a value > 0 [J/m^2] when Fracture = true (or set 'Critical "
+                                "stretch' > 0)");
+    }
+  } // namespace Parameters
+
+  template <int dim>
+  PDZone<dim>::PDZone(parallel::distributed::Triangulation<dim> &triangulation,
+                      const Parameters::Peridynamics<dim>       &parameters,
+                      const Parameters::Material                &material,
+                      const Parameters::Geometry                &geometry)
+    : triangulation(triangulation)
+    , parameters(parameters)
+    , material(material)
+    , communicator(triangulation.get_communicator())
+    , mapping(1)
+  {
+    const double dx = parameters.lattice_spacing;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lattice_origin[d] = geometry.lower_corner[d];
+        n_sites[d]        = static_cast<unsigned int>(
+          std::floor((geometry.upper_corner[d] - geometry.lower_corner[d]) / dx + 1e-8));
+      }
+    Box<dim> domain;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        domain.lower[d] = geometry.lower_corner[d];
+        domain.upper[d] = geometry.upper_corner[d];
+      }
+    for (const auto &box : parameters.region.boxes)
+      if (!domain.contains(box.lower, 1e-12 * dx) || !domain.contains(box.upper, 1e-12 * dx))
+        {
+          std::ostringstream box_text;
+          box_text << box.lower << " : " << box.upper;
+          throw_invalid_parameter("Peridynamics/Region",
+                                  box_text.str(),
+                                  "boxes inside the domain 'Geometry/Lower corner' to "
+                                  "'Geometry/Upper corner'");
+        }
+    bonds.build_stencil(dx, parameters.horizon());
+    model = PDMaterialRegistry<dim>::create(parameters.material_model);
+  }
+
+  template <int dim>
+  Point<dim>
+  PDZone<dim>::site_position(const std::array<unsigned int, dim> &site) const
+  {
+    Point<dim> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = lattice_origin[d] + (site[d] + 0.5) * parameters.lattice_spacing;
+    return p;
+  }
+
+  template <int dim>
+  types::particle_index
+  PDZone<dim>::site_id(const std::array<unsigned int, dim> &site) const
+  {
+    types::particle_index id = 0;
+    for (int d = dim - 1; d >= 0; --d)
+      id = id * n_sites[d] + site[d];
+    return id;
+  }
+
+  namespace
+  {
+    /**
+     * Lattice sites whose centres lie in [lower, upper) of an axis-aligned cell: the
+     * half-open rule gives every site to exactly one cell.
+     */
+    template <int dim>
+    std::array<std::pair<unsigned int, unsigned int>, dim>
+    site_range(const Point<dim>                     &lower,
+               const Point<dim>                     &upper,
+               const Point<dim>                     &origin,
+               const double                          dx,
+               const std::array<unsigned int, dim> &n_sites)
+    {
+      std::array<std::pair<unsigned int, unsigned int>, dim> range;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double first = std::ceil((lower[d] - origin[d]) / dx - 0.5);
+          const double end   = std::ceil((upper[d] - origin[d]) / dx - 0.5);
+          range[d] = {static_cast<unsigned int>(std::max(first, 0.)),
+                      static_cast<unsigned int>(
+                        std::min(std::max(end, 0.), static_cast<double>(n_sites[d])))};
+        }
+      return range;
+    }
+
+    /** Visit every site of a range. */
+    template <int dim, typename Visitor>
+    void
+    for_each_site(const std::array<std::pair<unsigned int, unsigned int>, dim> &range,
+                  const Visitor                                                  &visit)
+    {
+      std::array<unsigned int, dim> site;
+      const auto                    loop = [&](const auto &self, const unsigned int d) -> void {
+        if (d == dim)
+          return visit(site);
+        for (site[d] = range[d].first; site[d] < range[d].second; ++site[d])
+          self(self, d + 1);
+      };
+      loop(loop, 0);
+    }
+
+    template <int dim>
+    std::pair<Point<dim>, Point<dim>>
+    cell_bounds(const typename Triangulation<dim>::cell_iterator &cell)
+    {
+      return {cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
+    }
+  } // namespace
+
+  template <int dim>
+  unsigned int
+  PDZone<dim>::cell_weight(const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    const auto [lower, upper] = cell_bounds<dim>(cell);
+    unsigned int n            = 0;
+    for_each_site<dim>(
+      site_range<dim>(lower, upper, lattice_origin, parameters.lattice_spacing, n_sites),
+      [&](const auto &site) { n += parameters.region.contains(site_position(site)); });
+    return 1000 + n * bonds.stencil.size();
+  }
+
+  template <int dim>
+  bool
+  PDZone<dim>::contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    return parameters.region.contains(cell->center());
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::setup(const ProblemData<dim> &data, const double dt)
+  {
+    time_step = dt;
+    generate_particles();
+    check_horizon_covered();
+    build_bonds();
+    model->initialize(material, bonds);
+    critical_stretch =
+      parameters.critical_stretch > 0 ?
+        parameters.critical_stretch :
+        (parameters.fracture ?
+           model->critical_stretch(parameters.energy_release_rate, parameters.horizon()) :
+           0.);
+
+    const unsigned int n_total = reference_position.size();
+    displacement.assign(n_total, Tensor<1, dim>());
+    velocity.assign(n_owned, Tensor<1, dim>());
+    acceleration.assign(n_owned, Tensor<1, dim>());
+    force_density.assign(n_owned, Tensor<1, dim>());
+    energy_density.assign(n_owned, 0.);
+    model_scalars.assign(n_total * model->n_particle_scalars(), 0.);
+    applied_force.assign(n_owned, Tensor<1, dim>());
+
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
+        if (parameters.prescribed[r].region.contains(reference_position[i]))
+          {
+            prescribed_particles.push_back({i, r});
+            break;
+          }
+
+    auto &u0 = const_cast<Functions::ParsedFunction<dim> &>(data.initial_displacement);
+    auto &v0 = const_cast<Functions::ParsedFunction<dim> &>(data.initial_velocity);
+    u0.set_time(0.);
+    v0.set_time(0.);
+    Vector<double> value(dim);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        u0.vector_value(reference_position[i], value);
+        for (unsigned int d = 0; d < dim; ++d)
+          displacement[i][d] = value(d);
+        v0.vector_value(reference_position[i], value);
+        for (unsigned int d = 0; d < dim; ++d)
+          velocity[i][d] = value(d);
+      }
+    work        = 0;
+    tracks_work = Utilities::MPI::logical_or(data.has_body_force || !prescribed_particles.empty(),
+                                             communicator);
+    compute_accelerations(0., data);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::generate_particles()
+  {
+    const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
+    particle_handler.initialize(triangulation, mapping, n_properties);
+    const double dx = parameters.lattice_spacing;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        const auto [lower, upper] = cell_bounds<dim>(cell);
+        for_each_site<dim>(site_range<dim>(lower, upper, lattice_origin, dx, n_sites),
+                           [&](const auto &site) {
+                             const Point<dim> x = site_position(site);
+                             if (!parameters.region.contains(x))
+                               return;
+                             Point<dim> unit;
+                             for (unsigned int d = 0; d < dim; ++d)
+                               unit[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
+                             particle_handler.insert_particle(x, unit, site_id(site), cell);
+                           });
+      }
+    particle_handler.update_cached_numbers();
+    AssertThrow(particle_handler.n_global_particles() > 0,
+                ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
+                           "site of spacing 'Peridynamics/Lattice spacing'; allowed: boxes "
+                           "that contain at least one lattice cell centre."));
+    particle_handler.exchange_ghost_particles(true);
+
+    reference_position.clear();
+    particle_id.clear();
+    for (const auto &particle : particle_handler)
+      {
+        reference_position.push_back(particle.get_location());
+        particle_id.push_back(particle.get_id());
+      }
+    n_owned = reference_position.size();
+    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost();
+         ++ghost)
+      {
+        reference_position.push_back(ghost->get_location());
+        particle_id.push_back(ghost->get_id());
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::check_horizon_covered() const
+  {
+    // Ghost particles come from one layer of ghost cells: every cell holding particles must
+    // be at least a horizon wide in each direction.
+    double smallest = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && particle_handler.n_particles_in_cell(cell) > 0)
+        {
+          const auto [lower, upper] = cell_bounds<dim>(cell);
+          for (unsigned int d = 0; d < dim; ++d)
+            smallest = std::min(smallest, upper[d] - lower[d]);
+        }
+    smallest = Utilities::MPI::min(smallest, communicator);
+    if (smallest < parameters.horizon() * (1. - 1e-12))
+      {
+        std::ostringstream value, allowed;
+        value << parameters.horizon_factor;
+        allowed << "a horizon delta = m dx not above the smallest background cell holding "
+                   "particles ("
+                << smallest << " m; now delta = " << parameters.horizon()
+                << " m), since ghost particles come from one layer of cells: use coarser "
+                   "cells (Geometry/Subdivisions, Global refinements) or a smaller horizon";
+        throw_invalid_parameter("Peridynamics/Horizon factor", value.str(), allowed.str());
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::build_bonds()
+  {
+    std::unordered_map<types::particle_index, unsigned int> local_index;
+    local_index.reserve(particle_id.size());
+    for (unsigned int i = 0; i < particle_id.size(); ++i)
+      local_index[particle_id[i]] = i;
+
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        std::array<unsigned int, dim> site;
+        types::particle_index         id = particle_id[i];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            site[d] = id % n_sites[d];
+            id /= n_sites[d];
+          }
+        bonds.begin_family();
+        for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+          {
+            std::array<unsigned int, dim> other;
+            bool                          inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const long s = static_cast<long>(site[d]) + bonds.stencil[k].offset[d];
+                inside       = inside && s >= 0 && s < static_cast<long>(n_sites[d]);
+                other[d]     = static_cast<unsigned int>(s);
+              }
+            if (!inside)
+              continue;
+            const auto found = local_index.find(site_id(other));
+            if (found == local_index.end())
+              {
+                AssertThrow(!parameters.region.contains(site_position(other)),
+                            ExcMessage("A neighbour within the horizon is neither owned nor a "
+                                       "ghost particle: the ghost layer does not cover the "
+                                       "horizon."));
+                continue;
+              }
+            const unsigned int j     = found->second;
+            auto               state = BondFamilies<dim>::intact;
+            for (const auto &crack : parameters.pre_cracks)
+              if (crack.cuts(reference_position[i], reference_position[j]))
+                state = BondFamilies<dim>::broken;
+            if (state != BondFamilies<dim>::broken &&
+                (parameters.no_fail_region.contains(reference_position[i]) ||
+                 parameters.no_fail_region.contains(reference_position[j])))
+              state = BondFamilies<dim>::unbreakable;
+            bonds.add_bond(j, k, state);
+          }
+      }
+    bonds.end_families(n_owned, reference_position.size());
+
+    bonds.weighted_volume.assign(reference_position.size(), 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          const auto &bond = bonds.stencil[bonds.stencil_index[n]];
+          bonds.weighted_volume[i] += bond.length * bond.length * bond.volume;
+        }
+    update_ghosts(bonds.weighted_volume, 1);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::update_ghosts(std::vector<double> &values, const unsigned int n_per_particle)
+  {
+    unsigned int i = 0;
+    for (auto &particle : particle_handler)
+      {
+        const ArrayView<double> properties = particle.get_properties();
+        for (unsigned int k = 0; k < n_per_particle; ++k)
+          properties[k] = values[n_per_particle * i + k];
+        ++i;
+      }
+    particle_handler.update_ghost_particles();
+    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost();
+         ++ghost, ++i)
+      {
+        AssertThrow(ghost->get_id() == particle_id[i],
+                    ExcMessage("Ghost particles changed order: rebuild the index maps."));
+        const ArrayView<const double> properties = ghost->get_properties();
+        for (unsigned int k = 0; k < n_per_particle; ++k)
+          values[n_per_particle * i + k] = properties[k];
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::update_ghost_displacements()
+  {
+    exchange_buffer.resize(dim * reference_position.size());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        exchange_buffer[dim * i + d] = displacement[i][d];
+    update_ghosts(exchange_buffer, dim);
+    for (unsigned int i = n_owned; i < reference_position.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        displacement[i][d] = exchange_buffer[dim * i + d];
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::break_bonds()
+  {
+    // Owner and ghost copies compute the same stretch from the same displacements, so both
+    // ends of a bond break in the same step on every partition.
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          if (bonds.state[n] != BondFamilies<dim>::intact)
+            continue;
+          const auto &bond = bonds.stencil[bonds.stencil_index[n]];
+          const double y = (bond.xi + displacement[bonds.neighbor[n]] - displacement[i]).norm();
+          if (y - bond.length > critical_stretch * bond.length)
+            bonds.state[n] = BondFamilies<dim>::broken;
+        }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::compute_internal_forces()
+  {
+    update_ghost_displacements();
+    model->compute_particle_scalars(bonds, displacement, model_scalars);
+    if (model->n_particle_scalars() > 0)
+      update_ghosts(model_scalars, model->n_particle_scalars());
+    model->compute_forces(bonds, displacement, model_scalars, force_density, energy_density);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::apply_prescribed_motion(const double time)
+  {
+    const double dt = time_step;
+    Vector<double> before(dim), now(dim), after(dim);
+    for (const auto &p : prescribed_particles)
+      {
+        const auto &condition = parameters.prescribed[p.region];
+        auto       &function  = *condition.function;
+        const auto &x         = reference_position[p.local_index];
+        function.set_time(time - dt);
+        function.vector_value(x, before);
+        function.set_time(time);
+        function.vector_value(x, now);
+        function.set_time(time + dt);
+        function.vector_value(x, after);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (!condition.components[d])
+              continue;
+            if (condition.prescribes_velocity)
+              {
+                velocity[p.local_index][d]     = now(d);
+                acceleration[p.local_index][d] = (after(d) - before(d)) / (2. * dt);
+              }
+            else
+              {
+                displacement[p.local_index][d] = now(d);
+                velocity[p.local_index][d]     = (after(d) - before(d)) / (2. * dt);
+                acceleration[p.local_index][d] = (after(d) - 2. * now(d) + before(d)) / (dt * dt);
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::predict(const double dt)
+  {
+    if (tracks_work)
+      {
+        previous_displacement.assign(displacement.begin(), displacement.begin() + n_owned);
+        previous_applied_force = applied_force;
+      }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        displacement[i] += dt * velocity[i] + (0.5 * dt * dt) * acceleration[i];
+        velocity[i] += (0.5 * dt) * acceleration[i];
+      }
+    step_open = true;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::compute_accelerations(const double time, const ProblemData<dim> &data)
+  {
+    // Prescribed particles take their prescribed motion, overriding the predictor.
+    apply_prescribed_motion(time);
+    update_ghost_displacements();
+    if (parameters.fracture)
+      break_bonds();
+    model->compute_particle_scalars(bonds, displacement, model_scalars);
+    if (model->n_particle_scalars() > 0)
+      update_ghosts(model_scalars, model->n_particle_scalars());
+    model->compute_forces(bonds, displacement, model_scalars, force_density, energy_density);
+
+    const double   rho = material.density, volume = particle_volume();
+    Vector<double> body(dim);
+    auto          &body_force = const_cast<Functions::ParsedFunction<dim> &>(data.body_force);
+    body_force.set_time(time);
+    std::vector<Tensor<1, dim>> prescribed_acceleration;
+    for (const auto &p : prescribed_particles)
+      prescribed_acceleration.push_back(acceleration[p.local_index]);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        Tensor<1, dim> b;
+        if (data.has_body_force)
+          {
+            body_force.vector_value(reference_position[i], body);
+            for (unsigned int d = 0; d < dim; ++d)
+              b[d] = body(d);
+          }
+        acceleration[i]  = (force_density[i] + b) / rho;
+        applied_force[i] = volume * b;
+      }
+    for (unsigned int k = 0; k < prescribed_particles.size(); ++k)
+      {
+        const unsigned int i         = prescribed_particles[k].local_index;
+        const auto        &condition = parameters.prescribed[prescribed_particles[k].region];
+        for (unsigned int d = 0; d < dim; ++d)
+          if (condition.components[d])
+            {
+              acceleration[i][d] = prescribed_acceleration[k][d];
+              // Load plus support reaction: m a - f V.
+              applied_force[i][d] = volume * (rho * acceleration[i][d] - force_density[i][d]);
+            }
+      }
+
+    if (tracks_work && step_open)
+      {
+        // Trapezoidal work of the applied forces over the step.
+        double increment = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          increment += (previous_applied_force[i] + applied_force[i]) *
+                       (displacement[i] - previous_displacement[i]);
+        work += 0.5 * increment;
+      }
+    step_open = false;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::correct(const double dt, const double time)
+  {
+    for (unsigned int i = 0; i < n_owned; ++i)
+      velocity[i] += (0.5 * dt) * acceleration[i];
+    apply_prescribed_motion(time);
+  }
+
+  namespace
+  {
+    /** Pseudo-random sign from a particle id: the same start vector on every partition. */
+    double
+    hashed_sign(const types::particle_index id, const unsigned int component)
+    {
+      std::uint64_t h = (id * 3 + component) * 0x9E3779B97F4A7C15ULL;
+      h ^= h >> 31;
+      h *= 0xBF58476D1CE4E5B9ULL;
+      h ^= h >> 29;
+      return (h & 1) ? 1. : -1.;
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  PDZone<dim>::estimate_stable_time_step(const unsigned int max_iterations)
+  {
+    const std::vector<Tensor<1, dim>> saved = displacement;
+    std::vector<Tensor<1, dim>>       x(n_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        x[i][d] = hashed_sign(particle_id[i], d);
+    const auto norm = [&](const std::vector<Tensor<1, dim>> &v) {
+      double sum = 0;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        sum += v[i] * v[i];
+      return std::sqrt(Utilities::MPI::sum(sum, communicator));
+    };
+    // The operator is applied as -f(eps x) / (rho eps) with eps x far below the lattice
+    // spacing, where the force is linear in the displacement to about 1e-8.
+    double eigenvalue = 0;
+    for (unsigned int it = 0; it < max_iterations; ++it)
+      {
+        const double scale = 1. / norm(x);
+        double       max_entry = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            x[i] *= scale;
+            for (unsigned int d = 0; d < dim; ++d)
+              max_entry = std::max(max_entry, std::abs(x[i][d]));
+          }
+        const double eps = 1e-8 * parameters.lattice_spacing /
+                           Utilities::MPI::max(max_entry, communicator);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          displacement[i] = eps * x[i];
+        compute_internal_forces();
+        double rayleigh = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const Tensor<1, dim> y = -force_density[i] / (material.density * eps);
+            rayleigh += x[i] * y;
+            x[i] = y;
+          }
+        rayleigh             = Utilities::MPI::sum(rayleigh, communicator);
+        const bool converged = std::abs(rayleigh - eigenvalue) <= 1e-6 * rayleigh;
+        eigenvalue           = rayleigh;
+        if (converged)
+          break;
+      }
+    displacement = saved;
+    compute_internal_forces();
+    AssertThrow(eigenvalue > 0,
+                ExcMessage("The PD stable-step estimate found no positive eigenvalue: does "
+                           "the PD zone have bonds?"));
+    return 2. / std::sqrt(eigenvalue);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::kinetic_energy() const
+  {
+    double sum = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      sum += velocity[i] * velocity[i];
+    return 0.5 * material.density * particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::strain_energy() const
+  {
+    double sum = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      sum += energy_density[i];
+    return particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::external_work() const
+  {
+    return Utilities::MPI::sum(work, communicator);
+  }
+
+  template <int dim>
+  types::particle_index
+  PDZone<dim>::n_global_particles() const
+  {
+    return particle_handler.n_global_particles();
+  }
+
+  template <int dim>
+  std::size_t
+  PDZone<dim>::n_global_bonds() const
+  {
+    return Utilities::MPI::sum(bonds.n_bonds(), communicator);
+  }
+
+  template <int dim>
+  std::size_t
+  PDZone<dim>::n_global_broken_bonds() const
+  {
+    std::size_t broken = 0;
+    for (const auto state : bonds.state)
+      broken += state == BondFamilies<dim>::broken;
+    return Utilities::MPI::sum(broken, communicator);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::get_critical_stretch() const
+  {
+    return critical_stretch;
+  }
+
+  template <int dim>
+  const PDMaterialModel<dim> &
+  PDZone<dim>::get_material_model() const
+  {
+    return *model;
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::particle_volume() const
+  {
+    return std::pow(parameters.lattice_spacing, dim);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::write_output(const unsigned int step,
+                            const double       time,
+                            const std::string &directory,
+                            const std::string &base_name)
+  {
+    const unsigned int n_scalars = model->n_particle_scalars();
+    unsigned int       i         = 0;
+    for (auto &particle : particle_handler)
+      {
+        const ArrayView<double> properties = particle.get_properties();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            properties[d]       = displacement[i][d];
+            properties[dim + d] = velocity[i][d];
+          }
+        properties[2 * dim] = bonds.damage(i);
+        for (unsigned int k = 0; k < n_scalars; ++k)
+          properties[2 * dim + 1 + k] = model_scalars[n_scalars * i + k];
+        ++i;
+      }
+    std::vector<std::string> names(dim, "displacement");
+    names.insert(names.end(), dim, "velocity");
+    names.push_back("damage");
+    for (const auto &name : model->particle_scalar_names())
+      names.push_back(name);
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      2 * dim, DataComponentInterpretation::component_is_part_of_vector);
+    interpretation.insert(interpretation.end(),
+                          1 + n_scalars,
+                          DataComponentInterpretation::component_is_scalar);
+
+    Particles::DataOut<dim> data_out;
+    data_out.build_patches(particle_handler, names, interpretation);
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      directory + "/", base_name + "_pd", step, communicator, 6);
+    if (!output_series)
+      output_series =
+        std::make_unique<PVDSeries>(directory + "/" + base_name + "_pd.pvd", communicator);
+    output_series->add(time, name);
+  }
+
+  template class PDZone<2>;
+  template class PDZone<3>;
+  namespace Parameters
+  {
+    template struct Peridynamics<2>;
+    template struct Peridynamics<3>;
+  } // namespace Parameters
+} // namespace PeriArlequin
