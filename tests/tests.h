@@ -151,6 +151,21 @@ namespace PeriArlequinTests
       }
   }
 
+  /** Parameter text of a box "lower : upper" in the PD region syntax. */
+  template <int dim>
+  std::string
+  box_text(const Point<dim> &lower, const Point<dim> &upper)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17);
+    for (unsigned int d = 0; d < dim; ++d)
+      text << (d ? ", " : "") << lower[d];
+    text << " : ";
+    for (unsigned int d = 0; d < dim; ++d)
+      text << (d ? ", " : "") << upper[d];
+    return text.str();
+  }
+
   /** Run a test body under MPI; a failed check or any error gives exit code 1. */
   template <typename Body>
   int

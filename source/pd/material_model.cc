@@ -7,6 +7,22 @@
 
 namespace PeriArlequin
 {
+  namespace
+  {
+    /**
+     * Extension e = |xi + eta| - |xi| and deformed length of a bond, with e computed as
+     * (2 xi.eta + eta.eta) / (|xi + eta| + |xi|): no cancellation of nearly equal lengths,
+     * so small strains keep full relative precision.
+     */
+    template <typename Bond, int dim>
+    inline std::pair<double, double>
+    extension(const Bond &bond, const Tensor<1, dim> &eta)
+    {
+      const double length = (bond.xi + eta).norm();
+      return {(2. * (bond.xi * eta) + eta * eta) / (length + bond.length), length};
+    }
+  } // namespace
+
   template <int dim>
   std::map<std::string, typename PDMaterialRegistry<dim>::Entry> &
   PDMaterialRegistry<dim>::models()
@@ -113,8 +129,7 @@ namespace PeriArlequin
             if (bonds.state[n] == BondFamilies<dim>::broken)
               continue;
             const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
-            const Tensor<1, dim> y    = bond.xi + u[bonds.neighbor[n]] - u[i];
-            const double         e    = y.norm() - bond.length;
+            const double         e    = extension(bond, u[bonds.neighbor[n]] - u[i]).first;
             extension_moment += bond.length * e * bond.volume;
             intact_weighted_volume += bond.length * bond.length * bond.volume;
           }
@@ -154,9 +169,9 @@ namespace PeriArlequin
               continue;
             const unsigned int   j      = bonds.neighbor[n];
             const auto          &bond   = bonds.stencil[bonds.stencil_index[n]];
-            const Tensor<1, dim> y      = bond.xi + u[j] - u[i];
-            const double         length = y.norm();
-            const double         e      = length - bond.length;
+            const Tensor<1, dim> eta    = u[j] - u[i];
+            const auto [e, length]      = extension(bond, eta);
+            const Tensor<1, dim> y      = bond.xi + eta;
             const double         ed_i   = e - theta_i * bond.length / 3.;
             const double         ed_j   = e - scalars[2 * j] * bond.length / 3.;
             const double t_ij = alpha_i * bond.length + beta_i * ed_i;
