@@ -166,6 +166,44 @@ namespace PeriArlequinTests
     return text.str();
   }
 
+  /**
+   * Run the case given by @p parameters on all ranks and, on rank 0 alone (MPI_COMM_SELF),
+   * once more; return the largest difference between the two energy histories, per column
+   * relative to the column's largest magnitude (the same on every rank).
+   */
+  template <int dim>
+  double
+  parallel_vs_serial_history_difference(const std::string &parameters, const std::string &title)
+  {
+    auto parallel = make_simulator<dim>(parameters, MPI_COMM_WORLD);
+    parallel->run();
+    const auto &rows  = parallel->get_energy_history().rows();
+    double      worst = 0;
+    if (is_root())
+      {
+        auto serial = make_simulator<dim>(parameters, MPI_COMM_SELF);
+        serial->run();
+        const auto &reference = serial->get_energy_history().rows();
+        AssertThrow(reference.size() == rows.size(),
+                    ExcMessage("the runs recorded different numbers of steps"));
+        for (unsigned int c = 0; c < rows.front().size(); ++c)
+          {
+            double magnitude = 0, difference = 0;
+            for (unsigned int n = 0; n < rows.size(); ++n)
+              {
+                magnitude  = std::max(magnitude, std::abs(reference[n][c]));
+                difference = std::max(difference, std::abs(rows[n][c] - reference[n][c]));
+              }
+            report(title + " " + parallel->get_energy_history().column_names()[c] +
+                     " largest magnitude",
+                   magnitude);
+            if (magnitude > 0)
+              worst = std::max(worst, difference / magnitude);
+          }
+      }
+    return Utilities::MPI::max(worst, MPI_COMM_WORLD);
+  }
+
   /** Run a test body under MPI; a failed check or any error gives exit code 1. */
   template <typename Body>
   int

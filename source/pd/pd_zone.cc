@@ -659,15 +659,18 @@ namespace PeriArlequin
 
   namespace
   {
-    /** Pseudo-random sign from a particle id: the same start vector on every partition. */
+    /**
+     * Pseudo-random value in [-1, 1) from a particle id and a component: a start vector for
+     * power iterations with a component on every mode, the same on every partition.
+     */
     double
-    hashed_sign(const types::particle_index id, const unsigned int component)
+    hashed_value(const types::particle_index id, const unsigned int component)
     {
-      std::uint64_t h = (id * 3 + component) * 0x9E3779B97F4A7C15ULL;
+      std::uint64_t h = (id * 3 + component + 1) * 0x9E3779B97F4A7C15ULL;
       h ^= h >> 31;
       h *= 0xBF58476D1CE4E5B9ULL;
       h ^= h >> 29;
-      return (h & 1) ? 1. : -1.;
+      return static_cast<double>(h >> 11) / static_cast<double>(1ULL << 52) - 1.;
     }
   } // namespace
 
@@ -679,7 +682,7 @@ namespace PeriArlequin
     std::vector<Tensor<1, dim>>       x(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        x[i][d] = hashed_sign(particle_id[i], d);
+        x[i][d] = hashed_value(particle_id[i], d);
     const auto norm = [&](const std::vector<Tensor<1, dim>> &v) {
       double sum = 0;
       for (unsigned int i = 0; i < n_owned; ++i)

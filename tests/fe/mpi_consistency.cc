@@ -44,36 +44,9 @@ template <int dim>
 void
 compare_one_and_two_ranks()
 {
-  auto parallel = make_simulator<dim>(case_parameters<dim>(), MPI_COMM_WORLD);
-  parallel->run();
-  const auto &rows = parallel->get_energy_history().rows();
-
-  double worst = 0;
-  if (is_root())
-    {
-      auto serial = make_simulator<dim>(case_parameters<dim>(), MPI_COMM_SELF);
-      serial->run();
-      const auto &reference = serial->get_energy_history().rows();
-      AssertThrow(reference.size() == rows.size() && rows.size() == 301,
-                  ExcMessage("the runs recorded different numbers of steps"));
-      for (unsigned int c = 0; c < rows.front().size(); ++c)
-        {
-          double magnitude = 0, difference = 0;
-          for (unsigned int n = 0; n < rows.size(); ++n)
-            {
-              magnitude  = std::max(magnitude, std::abs(reference[n][c]));
-              difference = std::max(difference, std::abs(rows[n][c] - reference[n][c]));
-            }
-          report(std::to_string(dim) + "D " + parallel->get_energy_history().column_names()[c] +
-                   " largest magnitude",
-                 magnitude);
-          if (magnitude > 0)
-            worst = std::max(worst, difference / magnitude);
-        }
-    }
-  worst = Utilities::MPI::max(worst, MPI_COMM_WORLD);
   check_below(std::to_string(dim) + "D energy history, 2 ranks vs 1 rank, max relative difference",
-              worst,
+              parallel_vs_serial_history_difference<dim>(case_parameters<dim>(),
+                                                         std::to_string(dim) + "D"),
               1e-10);
 }
 

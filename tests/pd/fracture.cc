@@ -1,0 +1,119 @@
+// Fracture.
+// 1. A single bond between two particles, one held and one pulled then released
+//    (u = U sin(pi t / T)), breaks at the first step whose stretch exceeds the critical
+//    stretch, which is s_c = sqrt(4 pi G0 / (9 E delta)) in plane stress and
+//    sqrt(5 G0 / (9 K delta)) in 3D (written out here), and stays broken when the stretch
+//    falls back below it.
+// 2. A plate with an edge pre-crack pulled apart slowly (top and bottom layers displaced by
+//    +-U (1 - cos(pi t / T)) / 2, far-field strain 0.5 s_c at the end) grows damage from the
+//    crack tip: new broken bonds appear, all of them ahead of the tip and near the crack
+//    line; the same plate without the pre-crack breaks no bond.
+
+#include "../tests.h"
+
+#include "plate.h"
+
+using namespace PeriArlequinTests;
+
+template <int dim>
+void
+single_bond()
+{
+  const double dx = 1e-3, G0 = 100., E = 69e9, nu = 0.3, delta = 3.015 * dx;
+  const double s_c = dim == 2 ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
+                                std::sqrt(5 * G0 / (9 * (E / (3 * (1 - 2 * nu))) * delta));
+  const double U = 2 * s_c * dx, T = 1e-4;
+  std::ostringstream prm;
+  prm << "set Dimension = " << dim << "\n"
+      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
+      << "\n  set Upper corner = " << (dim == 2 ? "0.01, 0.01" : "0.01, 0.01, 0.01")
+      << "\n  set Subdivisions = " << (dim == 2 ? "2, 2" : "2, 2, 2") << "\nend\n"
+      << "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Peridynamics\n  set Region = "
+      << (dim == 2 ? "0, 0 : 0.002, 0.001" : "0, 0, 0 : 0.002, 0.001, 0.001")
+      << "\n  set Lattice spacing = " << dx << "\n  set Fracture = true\n"
+      << "  set Critical energy release rate = " << G0 << "\n"
+      << "  subsection Prescribed region 0\n    set Region = "
+      << (dim == 2 ? "0, 0 : 0.001, 0.001" : "0, 0, 0 : 0.001, 0.001, 0.001") << "\n  end\n"
+      << "  subsection Prescribed region 1\n    set Region = "
+      << (dim == 2 ? "0.001, 0 : 0.002, 0.001" : "0.001, 0, 0 : 0.002, 0.001, 0.001")
+      << "\n    subsection Function\n      set Function constants = U=" << std::setprecision(17)
+      << U << ", T=" << T << "\n      set Function expression = U*sin(pi*t/T); 0"
+      << (dim == 3 ? "; 0" : "") << "\n    end\n  end\nend\n"
+      << "subsection Time\n  set Time step = 2e-8\n  set End time = " << T << "\nend\n"
+      << quiet_output();
+  auto simulator = make_simulator<dim>(prm.str());
+  simulator->setup();
+  auto &pd = *simulator->get_pd_zone();
+  const std::string title = std::to_string(dim) + "D single bond";
+  check(title + ": critical stretch / formula", pd.get_critical_stretch() / s_c, 1., 1e-12);
+  AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,
+              ExcMessage("expected two particles and one bond (stored at both ends)"));
+
+  int  first_broken_step = -1, expected_step = -1;
+  bool broken_after_release = true;
+  for (int step = 1; simulator->get_time() < T * (1 - 1e-12); ++step)
+    {
+      simulator->advance();
+      const double stretch = U * std::sin(numbers::PI * simulator->get_time() / T) / dx;
+      if (expected_step < 0 && stretch > s_c)
+        expected_step = step;
+      const auto broken = pd.n_global_broken_bonds();
+      if (first_broken_step < 0 && broken == 2)
+        first_broken_step = step;
+      if (first_broken_step > 0 && broken != 2)
+        broken_after_release = false;
+    }
+  report(title + ": expected breaking step", expected_step);
+  report(title + ": breaking step", first_broken_step);
+  check(title + ": breaking step - first step with stretch > s_c", first_broken_step - expected_step, 0, 0);
+  check(title + ": bond stays broken after the stretch falls (1 = yes)", broken_after_release, 1, 0);
+}
+
+void
+precracked_plate()
+{
+  auto cracked = make_simulator<2>(plate_parameters(4e-4, true, 500));
+  cracked->run();
+  auto       &pd         = *cracked->get_pd_zone();
+  const auto  broken     = cracked->get_energy_history().column("broken_bonds");
+  const double delta     = 3.015 * 4e-4;
+  report("pre-cracked plate: bonds cut by the pre-crack", broken.front());
+  report("pre-cracked plate: broken bonds at the end", broken.back());
+  check_above("pre-cracked plate: new broken bonds", broken.back() - broken.front(), 20);
+  // Every bond broken after the start lies ahead of the tip (x > 0.02 - delta), within a few
+  // horizons of the crack line y = 0.02.
+  double farthest_from_line = 0, tip = 0;
+  for (unsigned int i = 0; i < pd.n_owned; ++i)
+    if (pd.bonds.damage(i) > 0 && pd.reference_position[i][0] > 0.02 - delta)
+      {
+        farthest_from_line =
+          std::max(farthest_from_line, std::abs(pd.reference_position[i][1] - 0.02));
+        tip = std::max(tip, pd.reference_position[i][0]);
+      }
+  report("pre-cracked plate: damaged particles' largest distance from the crack line / delta",
+         farthest_from_line / delta);
+  check_above("pre-cracked plate: crack advance beyond the pre-crack tip / delta",
+              (tip - 0.02) / delta,
+              2.);
+  check_below("pre-cracked plate: damage ahead of the tip within 3 horizons of the crack line",
+              farthest_from_line / delta,
+              3.);
+
+  auto intact = make_simulator<2>(plate_parameters(4e-4, false, 500));
+  intact->run();
+  check("plate without pre-crack: broken bonds at the end",
+        intact->get_energy_history().column("broken_bonds").back(),
+        0,
+        0);
+}
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] {
+    single_bond<2>();
+    single_bond<3>();
+    precracked_plate();
+  });
+}
