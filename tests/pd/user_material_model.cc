@@ -1,0 +1,140 @@
+// A user adds a PD material model without editing the library: this file defines a
+// bond-based prototype micro-elastic brittle (PMB) model, registers it under the name
+// "calibrated PMB" with PERIARLEQUIN_REGISTER_PD_MATERIAL, and runs it by naming it in the
+// parameter file. Its micromodulus is calibrated on the lattice so that the dilatation
+// energy is exactly classical: W = (c / 4) sum s^2 x V v with c = 18 K / sum x V v (3D) or
+// 4 E / ((1 - nu) sum x V v) (plane stress). Checked: under a pure dilatation the interior
+// force vanishes (1e-10 of the surface force: round-off) and W equals the classical
+// 9 K eps^2 / 2 (3D) or E eps^2 / (1 - nu) (plane stress) to 1e-10 (exact by construction).
+// The strain is 1e-4 because this simple model computes the stretch as a difference of
+// lengths, whose round-off is 1e-16 / strain relative.
+
+#include "../tests.h"
+
+#include <periarlequin/pd/material_model.h>
+
+namespace UserModels
+{
+  using namespace dealii;
+  using PeriArlequin::BondFamilies;
+
+  template <int dim>
+  class CalibratedPMB : public PeriArlequin::PDMaterialModel<dim>
+  {
+  public:
+    void
+    initialize(const PeriArlequin::Parameters::Material &material,
+               const BondFamilies<dim>                  &bonds) override
+    {
+      double moment = 0; // sum x V v over a full family
+      for (const auto &bond : bonds.stencil)
+        moment += bond.length * bond.volume;
+      micromodulus = dim == 3 ? 18 * material.bulk_modulus() / moment :
+                                4 * material.youngs_modulus / ((1 - material.poissons_ratio) * moment);
+      youngs_modulus = material.youngs_modulus;
+    }
+    unsigned int
+    n_particle_scalars() const override
+    {
+      return 0;
+    }
+    std::vector<std::string>
+    particle_scalar_names() const override
+    {
+      return {};
+    }
+    void
+    compute_particle_scalars(const BondFamilies<dim> &,
+                             const std::vector<Tensor<1, dim>> &,
+                             std::vector<double> &) const override
+    {}
+    void
+    compute_forces(const BondFamilies<dim>          &bonds,
+                   const std::vector<Tensor<1, dim>> &u,
+                   const std::vector<double> &,
+                   std::vector<Tensor<1, dim>> &force_density,
+                   std::vector<double>         &energy_density) const override
+    {
+      for (unsigned int i = 0; i < bonds.n_owned; ++i)
+        {
+          Tensor<1, dim> force;
+          double         energy = 0;
+          for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+            {
+              if (bonds.state[n] == BondFamilies<dim>::broken)
+                continue;
+              const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
+              const Tensor<1, dim> y    = bond.xi + u[bonds.neighbor[n]] - u[i];
+              const double         s    = (y.norm() - bond.length) / bond.length;
+              force += (micromodulus * s * bond.volume / y.norm()) * y;
+              energy += 0.25 * micromodulus * s * s * bond.length * bond.volume;
+            }
+          force_density[i]  = force;
+          energy_density[i] = energy;
+        }
+    }
+    double
+    critical_stretch(const double energy_release_rate, const double horizon) const override
+    {
+      return std::sqrt(5 * energy_release_rate / (9 * youngs_modulus * horizon));
+    }
+
+  private:
+    double micromodulus = 0, youngs_modulus = 0;
+  };
+
+  PERIARLEQUIN_REGISTER_PD_MATERIAL(CalibratedPMB,
+                                    "calibrated PMB",
+                                    "bond-based PMB calibrated on the lattice (a user model)")
+} // namespace UserModels
+
+using namespace PeriArlequinTests;
+
+template <int dim>
+void
+check_user_model()
+{
+  const double eps = 1e-4, dx = 1e-3, E = 69e9, nu = 0.3;
+  const double classical =
+    dim == 3 ? 4.5 * E / (3 * (1 - 2 * nu)) * eps * eps : E * eps * eps / (1 - nu);
+  std::ostringstream prm;
+  prm << "set Dimension = " << dim << "\n"
+      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
+      << "\n  set Upper corner = " << (dim == 2 ? "0.02, 0.02" : "0.016, 0.016, 0.016")
+      << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "4, 4, 4") << "\nend\n"
+      << "subsection Peridynamics\n  set Region = "
+      << (dim == 2 ? "0, 0 : 0.02, 0.02" : "0, 0, 0 : 0.016, 0.016, 0.016")
+      << "\n  set Lattice spacing = " << dx << "\n  set Material model = calibrated PMB\nend\n"
+      << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
+      << "subsection Initial conditions\n  subsection Displacement\n"
+      << "    set Function expression = " << eps << "*x; " << eps << "*y"
+      << (dim == 3 ? std::string("; ") + std::to_string(eps) + "*z" : "") << "\n  end\nend\n"
+      << quiet_output();
+  auto simulator = make_simulator<dim>(prm.str());
+  simulator->setup();
+  auto        &pd    = *simulator->get_pd_zone();
+  const double L     = dim == 2 ? 0.02 : 0.016, reach = 3.015 * dx + 0.5 * dx;
+  double       inner = 0, largest = 0, energy = 0;
+  for (unsigned int i = 0; i < pd.n_owned; ++i)
+    {
+      largest       = std::max(largest, pd.force_density[i].norm());
+      bool interior = true;
+      for (unsigned int d = 0; d < dim; ++d)
+        interior = interior && pd.reference_position[i][d] > reach &&
+                   pd.reference_position[i][d] < L - reach;
+      if (interior)
+        inner = std::max(inner, pd.force_density[i].norm()), energy = pd.energy_density[i];
+    }
+  const std::string title = std::to_string(dim) + "D calibrated PMB (user model)";
+  check_below(title + ": max interior |force| / max surface |force|", inner / largest, 1e-10);
+  check(title + ": W / classical under pure dilatation", energy / classical, 1., 1e-10);
+}
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] {
+    check_user_model<2>();
+    check_user_model<3>();
+  });
+}
