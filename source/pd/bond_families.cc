@@ -79,23 +79,46 @@ namespace PeriArlequin
 
   template <int dim>
   std::size_t
-  BondFamilies<dim>::n_bonds() const
+  BondFamilies<dim>::n_bond_ends() const
   {
-    return neighbor.size();
+    std::size_t ends = 0;
+    for (std::size_t n = 0; n < neighbor.size(); ++n)
+      ends += neighbor_is_owned(n) ? 2 : 1;
+    return ends;
   }
 
   template <int dim>
-  double
-  BondFamilies<dim>::damage(const unsigned int i) const
+  std::size_t
+  BondFamilies<dim>::n_broken_bond_ends() const
   {
-    double all = 0, kept = 0;
-    for (unsigned int b = family_begin[i]; b < family_begin[i + 1]; ++b)
-      {
-        const double v = stencil[stencil_index[b]].volume;
-        all += v;
-        kept += state[b] != broken ? v : 0.;
-      }
-    return all > 0 ? 1. - kept / all : 0.;
+    std::size_t ends = 0;
+    for (std::size_t n = 0; n < neighbor.size(); ++n)
+      if (state[n] == broken)
+        ends += neighbor_is_owned(n) ? 2 : 1;
+    return ends;
+  }
+
+  template <int dim>
+  std::vector<double>
+  BondFamilies<dim>::damage() const
+  {
+    std::vector<double> all(n_owned, 0.), kept(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        {
+          const double v         = stencil[stencil_index[n]].volume;
+          const double intact_v  = state[n] != broken ? v : 0.;
+          all[i] += v;
+          kept[i] += intact_v;
+          if (neighbor_is_owned(n))
+            {
+              all[neighbor[n]] += v;
+              kept[neighbor[n]] += intact_v;
+            }
+        }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      all[i] = all[i] > 0 ? 1. - kept[i] / all[i] : 0.;
+    return all;
   }
 
   template <int dim>

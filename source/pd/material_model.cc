@@ -7,22 +7,6 @@
 
 namespace PeriArlequin
 {
-  namespace
-  {
-    /**
-     * Extension e = |xi + eta| - |xi| and deformed length of a bond, with e computed as
-     * (2 xi.eta + eta.eta) / (|xi + eta| + |xi|): no cancellation of nearly equal lengths,
-     * so small strains keep full relative precision.
-     */
-    template <typename Bond, int dim>
-    inline std::pair<double, double>
-    extension(const Bond &bond, const Tensor<1, dim> &eta)
-    {
-      const double length = (bond.xi + eta).norm();
-      return {(2. * (bond.xi * eta) + eta * eta) / (length + bond.length), length};
-    }
-  } // namespace
-
   template <int dim>
   std::map<std::string, typename PDMaterialRegistry<dim>::Entry> &
   PDMaterialRegistry<dim>::models()
@@ -121,21 +105,32 @@ namespace PeriArlequin
     const std::vector<Tensor<1, dim>> &u,
     std::vector<double>               &scalars) const
   {
+    // Per owned particle: the extension moment sum x e V v and the intact weighted volume
+    // sum x^2 V v, gathered bond by bond into both owned ends.
+    moments.assign(2 * bonds.n_owned, 0.);
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          if (bonds.state[n] == BondFamilies<dim>::broken)
+            continue;
+          const unsigned int j    = bonds.neighbor[n];
+          const auto        &bond = bonds.stencil[bonds.stencil_index[n]];
+          const double       e    = BondFamilies<dim>::extension(bond, u[j] - u[i]).first;
+          const double       extension_moment = bond.length * e * bond.volume;
+          const double       weighted_volume  = bond.length * bond.length * bond.volume;
+          moments[2 * i] += extension_moment;
+          moments[2 * i + 1] += weighted_volume;
+          if (j < bonds.n_owned)
+            {
+              moments[2 * j] += extension_moment;
+              moments[2 * j + 1] += weighted_volume;
+            }
+        }
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       {
-        double extension_moment = 0, intact_weighted_volume = 0;
-        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-          {
-            if (bonds.state[n] == BondFamilies<dim>::broken)
-              continue;
-            const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
-            const double         e    = extension(bond, u[bonds.neighbor[n]] - u[i]).first;
-            extension_moment += bond.length * e * bond.volume;
-            intact_weighted_volume += bond.length * bond.length * bond.volume;
-          }
-        const double theta     = c * extension_moment / bonds.weighted_volume[i];
-        scalars[2 * i]         = theta;
-        scalars[2 * i + 1]     = extension_moment - theta * intact_weighted_volume / 3.;
+        const double theta = c * moments[2 * i] / bonds.weighted_volume[i];
+        scalars[2 * i]     = theta;
+        scalars[2 * i + 1] = moments[2 * i] - theta * moments[2 * i + 1] / 3.;
       }
   }
 
@@ -147,40 +142,57 @@ namespace PeriArlequin
                                               std::vector<Tensor<1, dim>>       &force_density,
                                               std::vector<double> &energy_density) const
   {
-    // Per particle (owned and ghost): t = alpha x + beta e_d with alpha = c (k theta -
-    // beta S / 3) / q and beta = b / q.
-    coefficients.resize(2 * bonds.n_total);
+    // Per particle (owned and ghost), with t = alpha x + beta e_d, alpha = c (k theta -
+    // beta S / 3) / q, beta = b / q: t = beta e + (alpha - beta theta / 3) x. So a bond's
+    // pair force is t_ij + t_ji = (beta_i + beta_j) e + (a_i + a_j) x with
+    // a = alpha - beta theta / 3; theta / 3 is kept for the deviatoric energy.
+    coefficients.resize(3 * bonds.n_total);
     for (unsigned int j = 0; j < bonds.n_total; ++j)
       {
-        const double q           = bonds.weighted_volume[j];
-        const double beta        = b / q;
-        coefficients[2 * j]      = c * (k * scalars[2 * j] - beta * scalars[2 * j + 1] / 3.) / q;
-        coefficients[2 * j + 1]  = beta;
+        const double q     = bonds.weighted_volume[j];
+        const double beta  = b / q;
+        const double theta = scalars[2 * j];
+        const double alpha = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
+        coefficients[3 * j]     = beta;
+        coefficients[3 * j + 1] = alpha - beta * theta / 3.;
+        coefficients[3 * j + 2] = theta / 3.;
       }
+    std::fill(force_density.begin(), force_density.begin() + bonds.n_owned, Tensor<1, dim>());
+    // Sum of omega e_d^2 V v per owned particle.
+    std::fill(energy_density.begin(), energy_density.begin() + bonds.n_owned, 0.);
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       {
-        const double   theta_i = scalars[2 * i];
-        const double   alpha_i = coefficients[2 * i], beta_i = coefficients[2 * i + 1];
-        Tensor<1, dim> force;
-        double         deviatoric = 0;
+        const double *const ci = &coefficients[3 * i];
+        Tensor<1, dim>      force_i;
+        double              deviatoric_i = 0;
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           {
             if (bonds.state[n] == BondFamilies<dim>::broken)
               continue;
             const unsigned int   j      = bonds.neighbor[n];
+            const double *const  cj     = &coefficients[3 * j];
             const auto          &bond   = bonds.stencil[bonds.stencil_index[n]];
             const Tensor<1, dim> eta    = u[j] - u[i];
-            const auto [e, length]      = extension(bond, eta);
-            const Tensor<1, dim> y      = bond.xi + eta;
-            const double         ed_i   = e - theta_i * bond.length / 3.;
-            const double         ed_j   = e - scalars[2 * j] * bond.length / 3.;
-            const double t_ij = alpha_i * bond.length + beta_i * ed_i;
-            const double t_ji = coefficients[2 * j] * bond.length + coefficients[2 * j + 1] * ed_j;
-            force += ((t_ij + t_ji) * bond.volume / length) * y;
-            deviatoric += ed_i * ed_i * bond.volume;
+            const auto [e, length]      = BondFamilies<dim>::extension(bond, eta);
+            const double         t      = (ci[0] + cj[0]) * e + (ci[1] + cj[1]) * bond.length;
+            const Tensor<1, dim> pair   = (t * bond.volume / length) * (bond.xi + eta);
+            const double         ed_i   = e - ci[2] * bond.length;
+            force_i += pair;
+            deviatoric_i += ed_i * ed_i * bond.volume;
+            if (j < bonds.n_owned)
+              {
+                const double ed_j = e - cj[2] * bond.length;
+                force_density[j] -= pair;
+                energy_density[j] += ed_j * ed_j * bond.volume;
+              }
           }
-        force_density[i]  = force;
-        energy_density[i] = 0.5 * k * theta_i * theta_i + 0.5 * beta_i * deviatoric;
+        force_density[i] += force_i;
+        energy_density[i] += deviatoric_i;
+      }
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      {
+        const double theta = scalars[2 * i];
+        energy_density[i]  = 0.5 * k * theta * theta + 0.5 * coefficients[3 * i] * energy_density[i];
       }
   }
 

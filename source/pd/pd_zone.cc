@@ -414,6 +414,7 @@ namespace PeriArlequin
     local_index.reserve(particle_id.size());
     for (unsigned int i = 0; i < particle_id.size(); ++i)
       local_index[particle_id[i]] = i;
+    bonds.weighted_volume.assign(reference_position.size(), 0.);
 
     for (unsigned int i = 0; i < n_owned; ++i)
       {
@@ -446,10 +447,21 @@ namespace PeriArlequin
                                        "horizon."));
                 continue;
               }
-            const unsigned int j     = found->second;
-            auto               state = BondFamilies<dim>::intact;
+            const unsigned int j = found->second;
+            // The full family gives the weighted volume; a bond between two owned particles
+            // is stored only at the lower local index.
+            bonds.weighted_volume[i] +=
+              bonds.stencil[k].length * bonds.stencil[k].length * bonds.stencil[k].volume;
+            if (j < n_owned && j < i)
+              continue;
+            // Test the crack with the ends in the order of their global ids, so that the
+            // ranks holding the two ends decide alike even for a bond grazing a crack tip.
+            const bool         i_first = particle_id[i] < particle_id[j];
+            const Point<dim>  &first   = reference_position[i_first ? i : j];
+            const Point<dim>  &second  = reference_position[i_first ? j : i];
+            auto               state   = BondFamilies<dim>::intact;
             for (const auto &crack : parameters.pre_cracks)
-              if (crack.cuts(reference_position[i], reference_position[j]))
+              if (crack.cuts(first, second))
                 state = BondFamilies<dim>::broken;
             if (state != BondFamilies<dim>::broken &&
                 (parameters.no_fail_region.contains(reference_position[i]) ||
@@ -459,14 +471,6 @@ namespace PeriArlequin
           }
       }
     bonds.end_families(n_owned, reference_position.size());
-
-    bonds.weighted_volume.assign(reference_position.size(), 0.);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          const auto &bond = bonds.stencil[bonds.stencil_index[n]];
-          bonds.weighted_volume[i] += bond.length * bond.length * bond.volume;
-        }
     update_ghosts(bonds.weighted_volume, 1);
   }
 
@@ -512,16 +516,18 @@ namespace PeriArlequin
   void
   PDZone<dim>::break_bonds()
   {
-    // Owner and ghost copies compute the same stretch from the same displacements, so both
-    // ends of a bond break in the same step on every partition.
+    // Both ranks holding a bond to a ghost compute bit-identical extensions, so the bond
+    // breaks in the same step on both.
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
           if (bonds.state[n] != BondFamilies<dim>::intact)
             continue;
-          const auto &bond = bonds.stencil[bonds.stencil_index[n]];
-          const double y = (bond.xi + displacement[bonds.neighbor[n]] - displacement[i]).norm();
-          if (y - bond.length > critical_stretch * bond.length)
+          const auto  &bond = bonds.stencil[bonds.stencil_index[n]];
+          const double e =
+            BondFamilies<dim>::extension(bond, displacement[bonds.neighbor[n]] - displacement[i])
+              .first;
+          if (e > critical_stretch * bond.length)
             bonds.state[n] = BondFamilies<dim>::broken;
         }
   }
@@ -766,17 +772,14 @@ namespace PeriArlequin
   std::size_t
   PDZone<dim>::n_global_bonds() const
   {
-    return Utilities::MPI::sum(bonds.n_bonds(), communicator);
+    return Utilities::MPI::sum(bonds.n_bond_ends(), communicator);
   }
 
   template <int dim>
   std::size_t
   PDZone<dim>::n_global_broken_bonds() const
   {
-    std::size_t broken = 0;
-    for (const auto state : bonds.state)
-      broken += state == BondFamilies<dim>::broken;
-    return Utilities::MPI::sum(broken, communicator);
+    return Utilities::MPI::sum(bonds.n_broken_bond_ends(), communicator);
   }
 
   template <int dim>
@@ -807,8 +810,9 @@ namespace PeriArlequin
                             const std::string &directory,
                             const std::string &base_name)
   {
-    const unsigned int n_scalars = model->n_particle_scalars();
-    unsigned int       i         = 0;
+    const unsigned int        n_scalars = model->n_particle_scalars();
+    const std::vector<double> damage    = bonds.damage();
+    unsigned int              i         = 0;
     for (auto &particle : particle_handler)
       {
         const ArrayView<double> properties = particle.get_properties();
@@ -817,7 +821,7 @@ namespace PeriArlequin
             properties[d]       = displacement[i][d];
             properties[dim + d] = velocity[i][d];
           }
-        properties[2 * dim] = bonds.damage(i);
+        properties[2 * dim] = damage[i];
         for (unsigned int k = 0; k < n_scalars; ++k)
           properties[2 * dim + 1 + k] = model_scalars[n_scalars * i + k];
         ++i;

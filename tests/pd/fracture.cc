@@ -83,9 +83,10 @@ precracked_plate()
   check_above("pre-cracked plate: new broken bonds", broken.back() - broken.front(), 20);
   // Every bond broken after the start lies ahead of the tip (x > 0.02 - delta), within a few
   // horizons of the crack line y = 0.02.
-  double farthest_from_line = 0, tip = 0;
+  double                    farthest_from_line = 0, tip = 0;
+  const std::vector<double> damage             = pd.bonds.damage();
   for (unsigned int i = 0; i < pd.n_owned; ++i)
-    if (pd.bonds.damage(i) > 0 && pd.reference_position[i][0] > 0.02 - delta)
+    if (damage[i] > 0 && pd.reference_position[i][0] > 0.02 - delta)
       {
         farthest_from_line =
           std::max(farthest_from_line, std::abs(pd.reference_position[i][1] - 0.02));

@@ -55,23 +55,28 @@ namespace UserModels
                    std::vector<Tensor<1, dim>> &force_density,
                    std::vector<double>         &energy_density) const override
     {
+      // Each stored bond once, its pair force and energy shared by both owned ends.
+      std::fill(force_density.begin(), force_density.end(), Tensor<1, dim>());
+      std::fill(energy_density.begin(), energy_density.end(), 0.);
       for (unsigned int i = 0; i < bonds.n_owned; ++i)
-        {
-          Tensor<1, dim> force;
-          double         energy = 0;
-          for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-            {
-              if (bonds.state[n] == BondFamilies<dim>::broken)
-                continue;
-              const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
-              const Tensor<1, dim> y    = bond.xi + u[bonds.neighbor[n]] - u[i];
-              const double         s    = (y.norm() - bond.length) / bond.length;
-              force += (micromodulus * s * bond.volume / y.norm()) * y;
-              energy += 0.25 * micromodulus * s * s * bond.length * bond.volume;
-            }
-          force_density[i]  = force;
-          energy_density[i] = energy;
-        }
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          {
+            if (bonds.state[n] == BondFamilies<dim>::broken)
+              continue;
+            const unsigned int   j    = bonds.neighbor[n];
+            const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
+            const Tensor<1, dim> y    = bond.xi + u[j] - u[i];
+            const double         s    = (y.norm() - bond.length) / bond.length;
+            const Tensor<1, dim> pair = (micromodulus * s * bond.volume / y.norm()) * y;
+            const double energy = 0.25 * micromodulus * s * s * bond.length * bond.volume;
+            force_density[i] += pair;
+            energy_density[i] += energy;
+            if (bonds.neighbor_is_owned(n))
+              {
+                force_density[j] -= pair;
+                energy_density[j] += energy;
+              }
+          }
     }
     double
     critical_stretch(const double energy_release_rate, const double horizon) const override

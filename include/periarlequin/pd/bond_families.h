@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace PeriArlequin
@@ -12,12 +13,19 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * The bonds of a regular lattice, stored once as flat CSR arrays indexed by a local
-   * particle number (owned particles first, then ghosts; only owned particles have families).
+   * The bonds of a regular lattice as flat CSR arrays indexed by a local particle number
+   * (owned particles first, then ghosts). Each bond is stored once per rank that owns an end
+   * of it: a bond between two owned particles I < J only in the list of I, a bond between
+   * an owned particle and a ghost in the list of the owned one. A model visits every bond
+   * once and adds its contribution to both ends that are owned (pair-wise evaluation, as
+   * with Newton's third law in molecular dynamics): half the work of visiting each family in
+   * full. The two ranks holding a bond to a ghost compute it identically, so a bond breaks in
+   * the same step on both.
    *
    * On a lattice every bond is a lattice offset, so a bond stores only its neighbour and the
-   * index of its offset in a shared stencil that holds the reference bond vector xi, its
-   * length and the partial volume V_J v_IJ of eq. 22. Seven bytes a bond.
+   * index of its offset in a shared stencil that holds the reference bond vector xi (from
+   * the list owner to the neighbour), its length and the partial volume V v of eq. 22
+   * (the same from both ends on a uniform lattice). Seven bytes a bond.
    */
   template <int dim>
   class BondFamilies
@@ -69,11 +77,36 @@ namespace PeriArlequin
     /** Reference weighted volume q = sum x^2 V_J v_IJ over the full family, owned and ghosts. */
     std::vector<double> weighted_volume;
 
+    /**
+     * Extension e = |xi + eta| - |xi| of a bond whose ends moved apart by eta = u_J - u_I,
+     * and its deformed length. e is computed as (2 xi.eta + eta.eta) / (|xi + eta| + |xi|):
+     * no cancellation of nearly equal lengths, so small strains keep full relative
+     * precision; and the result is exactly the same seen from either end (eta and xi change
+     * sign exactly), so both ranks holding a bond agree on it to the last bit.
+     */
+    static std::pair<double, double>
+    extension(const StencilEntry &bond, const Tensor<1, dim> &eta)
+    {
+      const double length = (bond.xi + eta).norm();
+      return {(2. * (bond.xi * eta) + eta * eta) / (length + bond.length), length};
+    }
+
+    /** Whether the neighbour of stored bond @p n is owned (and so takes its share). */
+    bool
+    neighbor_is_owned(const std::size_t n) const
+    {
+      return neighbor[n] < n_owned;
+    }
+
+    /** Bond ends at owned particles (a bond between two owned particles counts twice). */
     std::size_t
-    n_bonds() const;
-    /** Damage 1 - (intact bond volume)/(initial bond volume) of owned particle @p i. */
-    double
-    damage(const unsigned int i) const;
+    n_bond_ends() const;
+    /** Bond ends at owned particles whose bond is broken. */
+    std::size_t
+    n_broken_bond_ends() const;
+    /** Damage 1 - (intact bond volume)/(initial bond volume) of every owned particle. */
+    std::vector<double>
+    damage() const;
     /** Memory of the bond arrays [bytes]. */
     std::size_t
     memory_consumption() const;

@@ -20,7 +20,8 @@ namespace PeriArlequin
    * A peridynamic constitutive model acting on the bond families of a lattice. A model may
    * need per-particle scalars (the LPS dilatation) of its neighbours: it computes them for
    * owned particles in compute_particle_scalars(); the PD zone copies them to the ghosts
-   * before compute_forces(). Broken bonds (state broken) carry no force.
+   * before compute_forces(). Broken bonds (state broken) carry no force. Each stored bond is
+   * visited once and its contribution goes to both ends that are owned (see BondFamilies).
    *
    * Users add a model by deriving from this class and registering it with
    * PERIARLEQUIN_REGISTER_PD_MATERIAL in their own source file; the parameter
@@ -139,6 +140,7 @@ namespace PeriArlequin
     double                      c = 0, k = 0, b = 0;
     double                      youngs_modulus = 0, bulk_modulus = 0;
     mutable std::vector<double> coefficients;
+    mutable std::vector<double> moments;
   };
 } // namespace PeriArlequin
 

@@ -130,8 +130,10 @@ namespace PeriArlequin
     external_work() const;
     types::particle_index
     n_global_particles() const;
+    /** Family sizes summed over all particles (each bond counted from both ends). */
     std::size_t
     n_global_bonds() const;
+    /** Broken bonds counted from both ends. */
     std::size_t
     n_global_broken_bonds() const;
     double
