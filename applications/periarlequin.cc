@@ -2,6 +2,7 @@
  * periarlequin: run a case described by a deal.II parameter file.
  *
  *   periarlequin input.prm                 run (serial, or under mpirun)
+ *   periarlequin --check input.prm         parse and validate the parameters only
  *   periarlequin --print-parameters [2|3]  print every parameter with default and documentation
  */
 #include <deal.II/base/mpi.h>
@@ -28,12 +29,18 @@ namespace
 
   template <int dim>
   void
-  run(const std::string &file_name)
+  run(const std::string &file_name, const bool check_only)
   {
     ParameterHandler prm;
     PeriArlequin::Simulator<dim>::declare_parameters(prm);
     prm.parse_input(file_name);
     PeriArlequin::Simulator<dim> simulator(prm, MPI_COMM_WORLD);
+    if (check_only)
+      {
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::cout << "Parameters of '" << file_name << "' are valid." << std::endl;
+        return;
+      }
     simulator.run();
   }
 
@@ -68,23 +75,26 @@ main(int argc, char **argv)
             (d == "2") ? print_parameters<2>() : print_parameters<3>();
           return 0;
         }
-      if (argc != 2 || first.empty() || first[0] == '-')
+      const bool        check_only = first == "--check";
+      const std::string file       = check_only && argc == 3 ? argv[2] : first;
+      if (argc != (check_only ? 3 : 2) || file.empty() || file[0] == '-')
         {
           if (root)
             std::cerr << "Usage: periarlequin input.prm\n"
+                         "       periarlequin --check input.prm\n"
                          "       periarlequin --print-parameters [2|3]\n";
           return 1;
         }
-      if (!std::ifstream(first))
+      if (!std::ifstream(file))
         {
           if (root)
-            std::cerr << "Error: cannot open the parameter file '" << first << "'.\n";
+            std::cerr << "Error: cannot open the parameter file '" << file << "'.\n";
           return 1;
         }
-      if (read_dimension(first) == 2)
-        run<2>(first);
+      if (read_dimension(file) == 2)
+        run<2>(file, check_only);
       else
-        run<3>(first);
+        run<3>(file, check_only);
     }
   catch (const ExceptionBase &error)
     {
