@@ -11,8 +11,7 @@ repeats=${REPEATS:-3}
 steps=${STEPS:-200}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+source "$top/benchmarks/common.sh"
 
 write_prm() { # dim, subdivisions, upper corner
   cat > "$work/case.prm" <<PRM
@@ -31,22 +30,15 @@ subsection Initial conditions
     set Function expression = $( [ "$1" = 2 ] && echo "sin(x); 0" || echo "sin(x); 0; 0" )
   end
 end
-subsection Output
-  set Output interval = 0
-  set Energy interval = 0
-  set Progress interval = 0
-  set Print timing summary = false
-end
 PRM
+  silent_output >> "$work/case.prm"
 }
 
-median() { sort -g | awk '{a[NR]=$1} END{print a[int((NR+1)/2)]}'; }
 
 run() { # ranks -> prints "dofs throughput" (median)
   local ranks=$1 out dofs
   for r in $(seq "$repeats"); do
-    if [ "$ranks" = 1 ]; then out=$("$build/periarlequin" "$work/case.prm")
-    else out=$(mpirun -np "$ranks" "$build/periarlequin" "$work/case.prm"); fi
+    out=$(launch "$ranks" "$build/periarlequin" "$work/case.prm")
     echo "$out" | awk '/Time loop/{print $(NF-2)}'
     dofs=$(echo "$out" | awk '/FE DoFs/{for(i=1;i<=NF;i++) if($i=="FE") print $(i-1)}')
     echo "$dofs" > "$work/dofs"

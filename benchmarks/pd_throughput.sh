@@ -19,17 +19,11 @@ build=$(cd "${1:-$top/build}" && pwd)
 repeats=${REPEATS:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+source "$top/benchmarks/common.sh"
 lammps_input="$top/../shared/bench/lammps-peri-lps/in.lps_block3d"
 have_lammps=false
 if command -v lmp >/dev/null && [ -f "$lammps_input" ]; then have_lammps=true; fi
 
-median() { sort -g | awk '{a[NR]=$1} END{print a[int((NR+1)/2)]}'; }
-launch() { # ranks, command...
-  local ranks=$1; shift
-  if [ "$ranks" = 1 ]; then "$@"; else mpirun -np "$ranks" "$@"; fi
-}
 
 write_prm() { # dim, n per edge, steps
   local dim=$1 n=$2 steps=$3 L cells lower upper region velocity
@@ -69,13 +63,8 @@ subsection Initial conditions
     set Function expression = $velocity
   end
 end
-subsection Output
-  set Output interval = 0
-  set Energy interval = 0
-  set Progress interval = 0
-  set Print timing summary = false
-end
 PRM
+  silent_output >> "$work/case.prm"
 }
 
 # ours: prints "bond-updates/s particle-steps/s peak-RSS-kB particles"

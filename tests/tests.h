@@ -13,6 +13,7 @@
 
 #include <periarlequin/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -202,6 +203,36 @@ namespace PeriArlequinTests
           }
       }
     return Utilities::MPI::max(worst, MPI_COMM_WORLD);
+  }
+
+  /**
+   * Energy conservation of a finished run: the largest |total energy - initial total| over
+   * the history, relative to the largest mechanical energy reached (loads may pump energy
+   * in), must stay below @p bound; and, so that the check is not vacuous, kinetic and strain
+   * energy must be exchanged (the kinetic energy drops below 0.8 of that scale at times).
+   */
+  inline void
+  check_energy_conservation(const std::string                 &name,
+                            const PeriArlequin::EnergyHistory &history,
+                            const unsigned int                 n_steps,
+                            const double                       bound)
+  {
+    const auto total   = history.column("total_energy");
+    const auto kinetic = history.column("kinetic_energy");
+    const auto strain  = history.column("strain_energy");
+    AssertThrow(total.size() == n_steps + 1,
+                ExcMessage("expected " + std::to_string(n_steps) + " recorded steps"));
+    double scale = 0, drift = 0;
+    for (unsigned int n = 0; n < total.size(); ++n)
+      {
+        scale = std::max(scale, kinetic[n] + strain[n]);
+        drift = std::max(drift, std::abs(total[n] - total.front()));
+      }
+    report(name + " energy scale", scale);
+    check_below(name + ": min kinetic / energy scale",
+                *std::min_element(kinetic.begin(), kinetic.end()) / scale,
+                0.8);
+    check_below(name + ": max |total energy drift| / energy scale", drift / scale, bound);
   }
 
   /** Run a test body under MPI; a failed check or any error gives exit code 1. */

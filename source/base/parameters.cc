@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <sstream>
 #include <limits>
 
 namespace PeriArlequin
@@ -20,19 +21,18 @@ namespace PeriArlequin
     throw std::logic_error("unreachable");
   }
 
+  void
+  throw_invalid_parameter(const std::string &parameter,
+                          const double       value,
+                          const std::string &allowed)
+  {
+    std::ostringstream text;
+    text << value;
+    throw_invalid_parameter(parameter, text.str(), allowed);
+  }
+
   namespace Parameters
   {
-    namespace
-    {
-      std::string
-      to_string(const double value)
-      {
-        std::ostringstream s;
-        s << value;
-        return s.str();
-      }
-    } // namespace
-
     void
     Geometry::declare_parameters(ParameterHandler &prm)
     {
@@ -117,14 +117,14 @@ namespace PeriArlequin
 
       if (!(youngs_modulus > 0))
         throw_invalid_parameter("Material/Young's modulus",
-                                to_string(youngs_modulus),
+                                youngs_modulus,
                                 "a value > 0 [Pa]");
       if (!(poissons_ratio > -1 && poissons_ratio < 0.5))
         throw_invalid_parameter("Material/Poisson's ratio",
-                                to_string(poissons_ratio),
+                                poissons_ratio,
                                 "a value in the open interval (-1, 0.5)");
       if (!(density > 0))
-        throw_invalid_parameter("Material/Density", to_string(density), "a value > 0 [kg/m^3]");
+        throw_invalid_parameter("Material/Density", density, "a value > 0 [kg/m^3]");
     }
 
     double
@@ -201,9 +201,9 @@ namespace PeriArlequin
       stability_iterations = prm.get_integer("Stability estimate iterations");
       prm.leave_subsection();
       if (!(time_step > 0))
-        throw_invalid_parameter("Time/Time step", to_string(time_step), "a value > 0 [s]");
+        throw_invalid_parameter("Time/Time step", time_step, "a value > 0 [s]");
       if (!(end_time > 0))
-        throw_invalid_parameter("Time/End time", to_string(end_time), "a value > 0 [s]");
+        throw_invalid_parameter("Time/End time", end_time, "a value > 0 [s]");
     }
 
     void

@@ -98,6 +98,26 @@ namespace PeriArlequin
     }
 
   template <int dim>
+  void
+  declare_component_selection(ParameterHandler &prm, const std::string &documentation)
+  {
+    prm.declare_entry("Components",
+                      dim == 2 ? "x, y" : "x, y, z",
+                      Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
+                      documentation);
+  }
+
+  template <int dim>
+  ComponentMask
+  parse_component_selection(ParameterHandler &prm)
+  {
+    std::vector<bool> mask(dim, false);
+    for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
+      mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
+    return ComponentMask(mask);
+  }
+
+  template <int dim>
   ProblemData<dim>::ProblemData()
     : initial_displacement(dim)
     , initial_velocity(dim)
@@ -125,10 +145,8 @@ namespace PeriArlequin
                           "Condition on boundary id " + std::to_string(b) +
                             " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
                             "traction), displacement (prescribed components) or traction.");
-        prm.declare_entry("Components",
-                          dim == 2 ? "x, y" : "x, y, z",
-                          Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                          "Components whose displacement is prescribed (Type = displacement).");
+        declare_component_selection<dim>(
+          prm, "Components whose displacement is prescribed (Type = displacement).");
         declare_vector_function<dim>(prm,
                               "Function",
                               "Prescribed displacement [m] (Type = displacement) or traction "
@@ -162,10 +180,7 @@ namespace PeriArlequin
         condition.type = type == "free"         ? BoundaryType::free :
                          type == "displacement" ? BoundaryType::displacement :
                                                   BoundaryType::traction;
-        std::vector<bool> mask(dim, false);
-        for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
-          mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
-        condition.components = ComponentMask(mask);
+        condition.components = parse_component_selection<dim>(prm);
         if (condition.type == BoundaryType::displacement && condition.components.n_selected_components() == 0)
           throw_invalid_parameter("Boundary conditions/" + name + "/Components",
                                   prm.get("Components"),
@@ -202,6 +217,14 @@ namespace PeriArlequin
                            const std::string &,
                            const std::string &,
                            Functions::ParsedFunction<3> &);
+  template void
+  declare_component_selection<2>(ParameterHandler &, const std::string &);
+  template void
+  declare_component_selection<3>(ParameterHandler &, const std::string &);
+  template ComponentMask
+  parse_component_selection<2>(ParameterHandler &);
+  template ComponentMask
+  parse_component_selection<3>(ParameterHandler &);
   template class ProblemData<2>;
   template class ProblemData<3>;
 } // namespace PeriArlequin

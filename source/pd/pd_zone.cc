@@ -80,10 +80,7 @@ namespace PeriArlequin
                             "displacement",
                             Patterns::Selection("displacement|velocity"),
                             "Whether Function gives the displacement [m] or the velocity [m/s].");
-          prm.declare_entry("Components",
-                            dim == 2 ? "x, y" : "x, y, z",
-                            Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                            "Prescribed components.");
+          declare_component_selection<dim>(prm, "Prescribed components.");
           declare_vector_function<dim>(prm,
                                        "Function",
                                        "Prescribed displacement [m] or velocity [m/s].");
@@ -96,11 +93,6 @@ namespace PeriArlequin
     void
     Peridynamics<dim>::parse_parameters(ParameterHandler &prm)
     {
-      const auto to_string = [](const double v) {
-        std::ostringstream s;
-        s << v;
-        return s.str();
-      };
       prm.enter_subsection("Peridynamics");
       region              = Region<dim>::parse(prm.get("Region"), "Peridynamics/Region");
       lattice_spacing     = prm.get_double("Lattice spacing");
@@ -119,10 +111,7 @@ namespace PeriArlequin
           auto &p               = prescribed[r];
           p.region              = Region<dim>::parse(prm.get("Region"), path + "Region");
           p.prescribes_velocity = prm.get("Type") == "velocity";
-          std::vector<bool> mask(dim, false);
-          for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
-            mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
-          p.components = ComponentMask(mask);
+          p.components          = parse_component_selection<dim>(prm);
           p.function   = std::make_unique<Functions::ParsedFunction<dim>>(dim);
           parse_vector_function(prm, path, "Function", *p.function);
           prm.leave_subsection();
@@ -133,11 +122,11 @@ namespace PeriArlequin
         return;
       if (!(lattice_spacing > 0))
         throw_invalid_parameter("Peridynamics/Lattice spacing",
-                                to_string(lattice_spacing),
+                                lattice_spacing,
                                 "a value > 0 [m]");
       if (!(horizon_factor >= 1))
         throw_invalid_parameter("Peridynamics/Horizon factor",
-                                to_string(horizon_factor),
+                                horizon_factor,
                                 "a value >= 1 (the horizon spans at least one lattice spacing)");
       const std::string models = PDMaterialRegistry<dim>::names();
       if (("|" + models + "|").find("|" + material_model + "|") == std::string::npos)
@@ -146,7 +135,7 @@ namespace PeriArlequin
                                 "one of the registered models " + models);
       if (fracture && critical_stretch == 0 && !(energy_release_rate > 0))
         throw_invalid_parameter("Peridynamics/Critical energy release rate",
-                                to_string(energy_release_rate),
+                                energy_release_rate,
                                 "a value > 0 [J/m^2] when Fracture = true (or set 'Critical "
                                 "stretch' > 0)");
     }

@@ -23,6 +23,12 @@ namespace PeriArlequin
                           const std::string &value,
                           const std::string &allowed);
 
+  /** The same for a number, printed as the parameter file would give it. */
+  [[noreturn]] void
+  throw_invalid_parameter(const std::string &parameter,
+                          const double       value,
+                          const std::string &allowed);
+
   namespace Parameters
   {
     /** A box domain meshed by a subdivided hyper-rectangle. */

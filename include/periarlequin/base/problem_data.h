@@ -33,6 +33,16 @@ namespace PeriArlequin
                         const std::string              &name,
                         Functions::ParsedFunction<dim> &function);
 
+  /** Declare the entry "Components": a selection among x, y[, z] (all by default). */
+  template <int dim>
+  void
+  declare_component_selection(ParameterHandler &prm, const std::string &documentation);
+
+  /** The component mask selected by the entry "Components". */
+  template <int dim>
+  ComponentMask
+  parse_component_selection(ParameterHandler &prm);
+
   /** What a boundary of the box prescribes. */
   enum class BoundaryType
   {
