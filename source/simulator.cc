@@ -287,6 +287,7 @@ namespace PeriArlequin
     const double work   = external_work + (pd_zone ? pd_zone->external_work() : 0.);
     const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
     const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
+    check_finite(kinetic + strain);
     energy_history->add_row({static_cast<double>(step),
                              time,
                              kinetic,
@@ -298,6 +299,27 @@ namespace PeriArlequin
                              pd_kinetic,
                              pd_strain,
                              broken});
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_finite(const double energy) const
+  {
+    if (std::isfinite(energy))
+      return;
+    std::ostringstream message;
+    message << "The solution is not finite at step " << step << " (t = " << time
+            << " s): an unstable time step, or initial data, loads or boundary values that "
+               "evaluate to NaN or infinity.";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::kinetic_energy() const
+  {
+    return (fe_zone ? fe_zone->kinetic_energy(velocity) : 0.) +
+           (pd_zone ? pd_zone->kinetic_energy() : 0.);
   }
 
   template <int dim>
@@ -320,6 +342,8 @@ namespace PeriArlequin
         (!force && wall - last_progress_time < output_parameters.progress_interval))
       return;
     last_progress_time = wall;
+    // Energies may not be recorded: make sure the state is finite when progress is shown.
+    check_finite(kinetic_energy());
     const double remaining = step > 0 ? wall * (n_steps - step) / step : 0.;
     pcout << "  step " << step << "/" << n_steps << ", t = " << std::setprecision(4)
           << std::scientific << time << " s, wall " << std::fixed << std::setprecision(1)
@@ -355,6 +379,7 @@ namespace PeriArlequin
         report_progress(n_steps, step == n_steps);
       }
     const double loop_time = wall_clock.wall_time();
+    check_finite(kinetic_energy());
     pcout << "Time loop: " << n_steps << " steps in " << loop_time << " s";
     if (fe_zone)
       pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * n_steps / loop_time

@@ -86,6 +86,12 @@ namespace PeriArlequin
     compute_accelerations(const double time);
     void
     record_energies();
+    /** Throw a clear error if the state (measured by an energy) is no longer finite. */
+    void
+    check_finite(const double energy) const;
+    /** Kinetic energy of both zones. */
+    double
+    kinetic_energy() const;
     void
     write_output();
     void
