@@ -72,16 +72,19 @@ namespace PeriArlequin
         k = bulk_modulus;
         b = 15. * mu;
       }
-    else
+    else if (material.planar_model == Parameters::PlanarModel::plane_stress)
       {
-        AssertThrow(material.planar_model == Parameters::PlanarModel::plane_stress,
-                    ExcMessage("Invalid input: parameter 'Material/Two-dimensional model' = "
-                               "'plane strain'; allowed with the PD material model 'LPS': "
-                               "plane stress."));
         c = 2. * (2. * nu - 1.) / (nu - 1.);
         k = bulk_modulus + mu * (nu + 1.) * (nu + 1.) / (9. * (2. * nu - 1.) * (2. * nu - 1.));
         b = 8. * mu;
       }
+    else
+      {
+        c = 2.;
+        k = bulk_modulus + mu / 9.;
+        b = 8. * mu;
+      }
+    plane_strain = dim == 2 && material.planar_model == Parameters::PlanarModel::plane_strain;
   }
 
   template <int dim>
@@ -203,6 +206,8 @@ namespace PeriArlequin
   {
     if (dim == 3)
       return std::sqrt(5. * energy_release_rate / (9. * bulk_modulus * horizon));
+    if (plane_strain)
+      return std::sqrt(5. * numbers::PI * energy_release_rate / (12. * youngs_modulus * horizon));
     return std::sqrt(4. * numbers::PI * energy_release_rate / (9. * youngs_modulus * horizon));
   }
 
@@ -213,5 +218,5 @@ namespace PeriArlequin
 
   PERIARLEQUIN_REGISTER_PD_MATERIAL(LinearPeridynamicSolid,
                                     "LPS",
-                                    "state-based linear peridynamic solid (3D, 2D plane stress)")
+                                    "state-based linear peridynamic solid (3D, 2D plane stress and plane strain)")
 } // namespace PeriArlequin

@@ -1,9 +1,9 @@
 // Fracture.
 // 1. A single bond between two particles, one held and one pulled then released
 //    (u = U sin(pi t / T)), breaks at the first step whose stretch exceeds the critical
-//    stretch, which is s_c = sqrt(4 pi G0 / (9 E delta)) in plane stress and
-//    sqrt(5 G0 / (9 K delta)) in 3D (written out here), and stays broken when the stretch
-//    falls back below it.
+//    stretch, which is s_c = sqrt(4 pi G0 / (9 E delta)) in plane stress,
+//    sqrt(5 pi G0 / (12 E delta)) in plane strain and sqrt(5 G0 / (9 K delta)) in 3D
+//    (written out here), and stays broken when the stretch falls back below it.
 // 2. A plate with an edge pre-crack pulled apart slowly (top and bottom layers displaced by
 //    +-U (1 - cos(pi t / T)) / 2, far-field strain 0.5 s_c at the end) grows damage from the
 //    crack tip: new broken bonds appear, all of them ahead of the tip and near the crack
@@ -17,18 +17,21 @@ using namespace PeriArlequinTests;
 
 template <int dim>
 void
-single_bond()
+single_bond(const std::string &model = "plane stress")
 {
   const double dx = 1e-3, G0 = 100., E = 69e9, nu = 0.3, delta = 3.015 * dx;
-  const double s_c = dim == 2 ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
-                                std::sqrt(5 * G0 / (9 * (E / (3 * (1 - 2 * nu))) * delta));
+  const double s_c =
+    dim == 3                ? std::sqrt(5 * G0 / (9 * (E / (3 * (1 - 2 * nu))) * delta)) :
+    model == "plane stress" ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
+                              std::sqrt(5 * numbers::PI * G0 / (12 * E * delta));
   const double U = 2 * s_c * dx, T = 1e-4;
   std::ostringstream prm;
   prm << "set Dimension = " << dim << "\n"
       << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
       << "\n  set Upper corner = " << (dim == 2 ? "0.01, 0.01" : "0.01, 0.01, 0.01")
       << "\n  set Subdivisions = " << (dim == 2 ? "2, 2" : "2, 2, 2") << "\nend\n"
-      << "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
+      << "  set Two-dimensional model = " << model << "\nend\n"
       << "subsection Peridynamics\n  set Region = "
       << (dim == 2 ? "0, 0 : 0.002, 0.001" : "0, 0, 0 : 0.002, 0.001, 0.001")
       << "\n  set Lattice spacing = " << dx << "\n  set Fracture = true\n"
@@ -45,7 +48,7 @@ single_bond()
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();
   auto &pd = *simulator->get_pd_zone();
-  const std::string title = std::to_string(dim) + "D single bond";
+  const std::string title = std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") + "single bond";
   check(title + ": critical stretch / formula", pd.get_critical_stretch() / s_c, 1., 1e-12);
   AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,
               ExcMessage("expected two particles and one bond (stored at both ends)"));
@@ -114,6 +117,7 @@ main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
     single_bond<2>();
+    single_bond<2>("plane strain");
     single_bond<3>();
     precracked_plate();
   });

@@ -99,19 +99,23 @@ namespace PeriArlequin
   };
 
   /**
-   * The state-based linear peridynamic solid (LPS) in 3D and in 2D plane stress, written in
-   * one form:
+   * The state-based linear peridynamic solid (LPS) in 3D and in 2D plane stress and plane
+   * strain, written in one form:
    *   theta = (c / q) sum omega x e V v,  e_d = e - theta x / 3,  beta = b / q,
    *   W = k theta^2 / 2 + beta / 2 sum omega e_d^2 V v,
    *   t = c (k theta - beta / 3 S) omega x / q + beta omega e_d,  S = sum omega e_d x V v,
    * with 3D (eq. 17, 25): c = 3, k = K, b = 15 mu (S vanishes while no bond is broken), and
    * plane stress (eq. 26-28, Le, Silling et al. 2014): c = 2 (2 nu - 1) / (nu - 1),
-   * k = K + mu (nu + 1)^2 / (9 (2 nu - 1)^2), b = 8 mu. t = dW/de / (V v), so the forces are
+   * k = K + mu (nu + 1)^2 / (9 (2 nu - 1)^2), b = 8 mu; plane strain (same source): c = 2,
+   * k = K + mu / 9, b = 8 mu (these make W classical under any uniform strain for a
+   * continuous family). t = dW/de / (V v), so the forces are
    * exactly minus the derivative of the energy. omega = 1 on intact bonds, q is the weighted
    * volume of the full initial family.
    *
    * Critical stretch: 3D s_c = sqrt(5 G0 / (9 K delta)) (Silling & Askari 2005); plane stress
-   * s_c = sqrt(4 pi G0 / (9 E delta)) (Ha & Bobaru 2010).
+   * s_c = sqrt(4 pi G0 / (9 E delta)) (Ha & Bobaru 2010); plane strain
+   * s_c = sqrt(5 pi G0 / (12 E delta)) (the same energy balance with the plane-strain
+   * bond-based micromodulus 48 E / (5 pi delta^3)).
    */
   template <int dim>
   class LinearPeridynamicSolid : public PDMaterialModel<dim>
@@ -139,6 +143,7 @@ namespace PeriArlequin
   private:
     double                      c = 0, k = 0, b = 0;
     double                      youngs_modulus = 0, bulk_modulus = 0;
+    bool                        plane_strain   = false;
     mutable std::vector<double> coefficients;
     mutable std::vector<double> moments;
   };
