@@ -186,8 +186,10 @@ namespace PeriArlequin
   Simulator<dim>::apply_prescribed_motion(const double t)
   {
     const double dt = time_parameters.time_step;
-    for (const auto &prescribed : prescribed_dofs)
+    prescribed_velocity.resize(prescribed_dofs.size());
+    for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
       {
+        const auto &prescribed = prescribed_dofs[k];
         auto &function = *problem_data.boundary_conditions[prescribed.boundary_id].function;
         const auto value = [&](const double at) {
           function.set_time(at);
@@ -195,7 +197,8 @@ namespace PeriArlequin
         };
         const double before = value(t - dt), now = value(t), after = value(t + dt);
         displacement.local_element(prescribed.local_index) = now;
-        velocity.local_element(prescribed.local_index)     = (after - before) / (2. * dt);
+        prescribed_velocity[k] = (after - before) / (2. * dt);
+        velocity.local_element(prescribed.local_index)     = prescribed_velocity[k];
         acceleration.local_element(prescribed.local_index) =
           (after - 2. * now + before) / (dt * dt);
       }
@@ -257,13 +260,14 @@ namespace PeriArlequin
         compute_accelerations(time);
         velocity.add(0.5 * dt, acceleration);
         // Prescribed DoFs take the prescribed velocity, not the integrated one.
-        apply_prescribed_motion(time);
+        for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
+          velocity.local_element(prescribed_dofs[k].local_index) = prescribed_velocity[k];
       }
     if (pd_zone)
       {
         TimerOutput::Scope scope(timer, "PD forces");
         pd_zone->compute_accelerations(time, problem_data);
-        pd_zone->correct(dt, time);
+        pd_zone->correct(dt);
       }
 
     if (fe_zone && any_work_done)

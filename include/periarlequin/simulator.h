@@ -116,6 +116,8 @@ namespace PeriArlequin
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::vector<typename FEZone<dim>::PrescribedDoF> prescribed_dofs;
+    /** Their velocities at the current time, computed once per step. */
+    std::vector<double>                              prescribed_velocity;
     bool                                             any_work_done = false;
 
     VectorType   displacement, velocity, acceleration;

@@ -297,7 +297,7 @@ namespace PeriArlequin
       for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
         if (parameters.prescribed[r].region.contains(reference_position[i]))
           {
-            prescribed_particles.push_back({i, r});
+            prescribed_particles.push_back({i, r, Tensor<1, dim>()});
             break;
           }
 
@@ -538,7 +538,7 @@ namespace PeriArlequin
   {
     const double dt = time_step;
     Vector<double> before(dim), now(dim), after(dim);
-    for (const auto &p : prescribed_particles)
+    for (auto &p : prescribed_particles)
       {
         const auto &condition = parameters.prescribed[p.region];
         auto       &function  = *condition.function;
@@ -555,17 +555,28 @@ namespace PeriArlequin
               continue;
             if (condition.prescribes_velocity)
               {
-                velocity[p.local_index][d]     = now(d);
+                p.velocity[d]                  = now(d);
                 acceleration[p.local_index][d] = (after(d) - before(d)) / (2. * dt);
               }
             else
               {
                 displacement[p.local_index][d] = now(d);
-                velocity[p.local_index][d]     = (after(d) - before(d)) / (2. * dt);
+                p.velocity[d]                  = (after(d) - before(d)) / (2. * dt);
                 acceleration[p.local_index][d] = (after(d) - 2. * now(d) + before(d)) / (dt * dt);
               }
           }
       }
+    restore_prescribed_velocities();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::restore_prescribed_velocities()
+  {
+    for (const auto &p : prescribed_particles)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (parameters.prescribed[p.region].components[d])
+          velocity[p.local_index][d] = p.velocity[d];
   }
 
   template <int dim>
@@ -645,11 +656,13 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::correct(const double dt, const double time)
+  PDZone<dim>::correct(const double dt)
   {
     for (unsigned int i = 0; i < n_owned; ++i)
       velocity[i] += (0.5 * dt) * acceleration[i];
-    apply_prescribed_motion(time);
+    // Prescribed components keep the velocity computed for this time in
+    // compute_accelerations().
+    restore_prescribed_velocities();
   }
 
   namespace

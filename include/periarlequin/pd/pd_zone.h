@@ -106,9 +106,9 @@ namespace PeriArlequin
     /** Bond breaking, forces and accelerations at time @p time, prescribed particles. */
     void
     compute_accelerations(const double time, const ProblemData<dim> &data);
-    /** v += dt/2 a, then prescribed velocities. */
+    /** v += dt/2 a, then the prescribed velocities of this step. */
     void
-    correct(const double dt, const double time);
+    correct(const double dt);
 
     /**
      * Internal force density of the current displacement (ghost exchange, model scalars,
@@ -174,6 +174,8 @@ namespace PeriArlequin
     break_bonds();
     void
     apply_prescribed_motion(const double time);
+    void
+    restore_prescribed_velocities();
 
     /** Lattice index of a point (per direction) and the particle id of a lattice site. */
     types::particle_index
@@ -196,8 +198,10 @@ namespace PeriArlequin
 
     struct PrescribedParticle
     {
-      unsigned int local_index;
-      unsigned int region;
+      unsigned int   local_index;
+      unsigned int   region;
+      /** Prescribed velocity at the current time (prescribed components only). */
+      Tensor<1, dim> velocity;
     };
     std::vector<PrescribedParticle> prescribed_particles;
     /** Applied force (body force plus support reactions) of owned particles [N]. */
