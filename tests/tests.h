@@ -211,13 +211,17 @@ namespace PeriArlequinTests
    * in), must stay below @p bound; and, so that the check is not vacuous, kinetic and strain
    * energy must be exchanged (the kinetic energy drops below 0.8 of that scale at times).
    */
-  inline void
-  check_energy_conservation(const std::string                 &name,
-                            const PeriArlequin::EnergyHistory &history,
-                            const unsigned int                 n_steps,
-                            const double                       bound)
+  template <int dim>
+  void
+  check_energy_conservation(const std::string                  &name,
+                            const PeriArlequin::Simulator<dim> &simulator,
+                            const unsigned int                  n_steps,
+                            const double                        bound)
   {
-    const auto total   = history.column("total_energy");
+    report(name + " time step / stable step",
+           simulator.get_time_step() / simulator.get_stable_time_step());
+    const auto &history = simulator.get_energy_history();
+    const auto  total   = history.column("total_energy");
     const auto kinetic = history.column("kinetic_energy");
     const auto strain  = history.column("strain_energy");
     AssertThrow(total.size() == n_steps + 1,
