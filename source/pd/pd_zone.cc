@@ -372,7 +372,7 @@ namespace PeriArlequin
   PDZone<dim>::check_horizon_covered() const
   {
     // Ghost particles come from one layer of ghost cells: every cell holding particles must
-    // be at least a horizon wide in each direction.
+    // be at least as wide as the bonds reach, delta + dx/2 with the partial volumes of eq. 22.
     double smallest = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && particle_handler.n_particles_in_cell(cell) > 0)
@@ -381,17 +381,18 @@ namespace PeriArlequin
           for (unsigned int d = 0; d < dim; ++d)
             smallest = std::min(smallest, upper[d] - lower[d]);
         }
-    smallest = Utilities::MPI::min(smallest, communicator);
-    if (smallest < parameters.horizon() * (1. - 1e-12))
+    smallest           = Utilities::MPI::min(smallest, communicator);
+    const double reach = parameters.horizon() + 0.5 * parameters.lattice_spacing;
+    if (smallest < reach * (1. - 1e-12))
       {
-        std::ostringstream value, allowed;
-        value << parameters.horizon_factor;
-        allowed << "a horizon delta = m dx not above the smallest background cell holding "
-                   "particles ("
-                << smallest << " m; now delta = " << parameters.horizon()
+        std::ostringstream allowed;
+        allowed << "a horizon whose bonds, reaching delta + dx/2 = " << reach
+                << " m, fit in the smallest background cell holding particles (" << smallest
                 << " m), since ghost particles come from one layer of cells: use coarser "
                    "cells (Geometry/Subdivisions, Global refinements) or a smaller horizon";
-        throw_invalid_parameter("Peridynamics/Horizon factor", value.str(), allowed.str());
+        throw_invalid_parameter("Peridynamics/Horizon factor",
+                                parameters.horizon_factor,
+                                allowed.str());
       }
   }
 
