@@ -161,7 +161,7 @@ namespace PeriArlequin
     Vector<double>        cell_force;
     Vector<double>        load(dim);
     std::vector<types::global_dof_index> dof_indices;
-    auto &body_force = const_cast<Functions::ParsedFunction<dim> &>(data.body_force);
+    auto &body_force = data.body_force;
     body_force.set_time(time);
 
     const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {

@@ -301,8 +301,8 @@ namespace PeriArlequin
             break;
           }
 
-    auto &u0 = const_cast<Functions::ParsedFunction<dim> &>(data.initial_displacement);
-    auto &v0 = const_cast<Functions::ParsedFunction<dim> &>(data.initial_velocity);
+    auto &u0 = data.initial_displacement;
+    auto &v0 = data.initial_velocity;
     u0.set_time(0.);
     v0.set_time(0.);
     Vector<double> value(dim);
@@ -613,7 +613,7 @@ namespace PeriArlequin
 
     const double   rho = material.density, volume = particle_volume();
     Vector<double> body(dim);
-    auto          &body_force = const_cast<Functions::ParsedFunction<dim> &>(data.body_force);
+    auto          &body_force = data.body_force;
     body_force.set_time(time);
     std::vector<Tensor<1, dim>> prescribed_acceleration;
     for (const auto &p : prescribed_particles)

@@ -82,10 +82,11 @@ namespace PeriArlequin
     void
     parse_parameters(ParameterHandler &prm);
 
-    Functions::ParsedFunction<dim> initial_displacement;
-    Functions::ParsedFunction<dim> initial_velocity;
+    // The functions are mutable: setting the evaluation time does not change the problem.
+    mutable Functions::ParsedFunction<dim> initial_displacement;
+    mutable Functions::ParsedFunction<dim> initial_velocity;
     /** Body force per unit volume [N/m^3]. */
-    Functions::ParsedFunction<dim> body_force;
+    mutable Functions::ParsedFunction<dim> body_force;
     /** True unless every component of the body-force expression is the literal 0. */
     bool has_body_force = false;
 
