@@ -99,9 +99,7 @@ namespace PeriArlequin
         std::ostringstream allowed;
         allowed << "a value <= the estimated stable step " << stable_time_step
                 << " s (2/sqrt(lambda_max(M^-1 K)) of this discretisation and material)";
-        std::ostringstream value;
-        value << dt;
-        throw_invalid_parameter("Time/Time step", value.str(), allowed.str());
+        throw_invalid_parameter("Time/Time step", dt, allowed.str());
       }
 
     time = 0.;
