@@ -402,13 +402,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  bool
-  Simulator<dim>::has_fe_zone() const
-  {
-    return fe_zone != nullptr;
-  }
-
-  template <int dim>
   PDZone<dim> *
   Simulator<dim>::get_pd_zone()
   {

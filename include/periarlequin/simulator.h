@@ -52,11 +52,9 @@ namespace PeriArlequin
     void
     advance();
 
-    /** The FE zone; only valid if has_fe_zone(). */
+    /** The FE zone; only valid if the case has FE cells. */
     const FEZone<dim> &
     get_fe_zone() const;
-    bool
-    has_fe_zone() const;
     /** The PD zone, or nullptr if the case has none. */
     PDZone<dim> *
     get_pd_zone();

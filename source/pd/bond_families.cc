@@ -121,16 +121,6 @@ namespace PeriArlequin
     return all;
   }
 
-  template <int dim>
-  std::size_t
-  BondFamilies<dim>::memory_consumption() const
-  {
-    return family_begin.capacity() * sizeof(unsigned int) +
-           neighbor.capacity() * sizeof(unsigned int) +
-           stencil_index.capacity() * sizeof(std::uint16_t) + state.capacity() +
-           weighted_volume.capacity() * sizeof(double) + stencil.capacity() * sizeof(StencilEntry);
-  }
-
   template class BondFamilies<2>;
   template class BondFamilies<3>;
 } // namespace PeriArlequin

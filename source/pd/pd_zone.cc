@@ -793,13 +793,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  const PDMaterialModel<dim> &
-  PDZone<dim>::get_material_model() const
-  {
-    return *model;
-  }
-
-  template <int dim>
   double
   PDZone<dim>::particle_volume() const
   {

@@ -107,9 +107,6 @@ namespace PeriArlequin
     /** Damage 1 - (intact bond volume)/(initial bond volume) of every owned particle. */
     std::vector<double>
     damage() const;
-    /** Memory of the bond arrays [bytes]. */
-    std::size_t
-    memory_consumption() const;
   };
 } // namespace PeriArlequin
 

@@ -153,8 +153,6 @@ namespace PeriArlequin
     std::vector<double>                model_scalars;
     BondFamilies<dim>                  bonds;
 
-    const PDMaterialModel<dim> &
-    get_material_model() const;
     double
     particle_volume() const;
 
