@@ -4,7 +4,10 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <cmath>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -25,6 +28,7 @@ namespace PeriArlequin
     Parameters::Time::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);
     Parameters::Peridynamics<dim>::declare_parameters(prm);
+    Parameters::Coupling::declare_parameters(prm);
     ProblemData<dim>::declare_parameters(prm);
   }
 
@@ -44,7 +48,22 @@ namespace PeriArlequin
     time_parameters.parse_parameters(prm);
     output_parameters.parse_parameters(prm);
     pd_parameters.parse_parameters(prm);
+    coupling_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
+    if (coupling_parameters.method != Parameters::CouplingMethod::none)
+      blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
+                                                      pd_parameters.region,
+                                                      geometry);
+    monitor_region = output_parameters.monitor_region.empty() ?
+                       pd_parameters.region :
+                       Region<dim>::parse(output_parameters.monitor_region,
+                                          "Output/Monitor region");
+    if (!output_parameters.sample_line.empty())
+      {
+        const auto [a, b] =
+          parse_segment<dim>(output_parameters.sample_line, "Output/Sample line");
+        sample_segment = {a, b};
+      }
   }
 
   template <int dim>
@@ -65,8 +84,23 @@ namespace PeriArlequin
 
     if (!pd_parameters.region.empty())
       {
-        pd_zone =
-          std::make_unique<PDZone<dim>>(triangulation, pd_parameters, material, geometry);
+        typename PDZone<dim>::SiteFilter extent;
+        if (blending)
+          {
+            // Particles fill the PD region and the overlap, plus the slaves: every site
+            // within the bonds' reach delta + dx/2 of them, so no weighted family is cut.
+            const double reach =
+              (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) * (1. + 1e-10);
+            extent = [this, reach](const Point<dim> &x) {
+              return blending->distance_to_pd_part(x) <= reach;
+            };
+          }
+        pd_zone = std::make_unique<PDZone<dim>>(
+          triangulation, pd_parameters, material, geometry, extent);
+        if (blending)
+          pd_zone->set_blending([this](const Point<dim> &x) { return blending->value(x); },
+                                coupling_parameters.blending == Parameters::Blending::energy,
+                                coupling_parameters.minimum_mass_weight);
         // Balance particles x family size (and FE cells) across ranks before DoFs exist.
         triangulation.signals.weight.connect(
           [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -90,6 +124,15 @@ namespace PeriArlequin
     if (pd_zone)
       {
         pd_zone->setup(problem_data, dt);
+        if (blending)
+          {
+            std::vector<unsigned int> fixed;
+            for (const auto &prescribed : prescribed_dofs)
+              fixed.push_back(prescribed.local_index);
+            coupling = std::make_unique<ArlequinCoupling<dim>>(
+              coupling_parameters, *blending, material, *fe_zone, *pd_zone);
+            coupling->setup(fixed, dt);
+          }
         stable_time_step =
           std::min(stable_time_step,
                    pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
@@ -111,7 +154,15 @@ namespace PeriArlequin
         fe_zone->interpolate(problem_data.initial_displacement, displacement);
         fe_zone->interpolate(problem_data.initial_velocity, velocity);
         apply_prescribed_motion(time);
+        if (coupling)
+          {
+            // Slaves start on the FE field; their neighbours' forces follow.
+            coupling->set_slave_displacements(displacement);
+            pd_zone->compute_accelerations(time, problem_data);
+          }
         compute_accelerations(time);
+        if (coupling)
+          coupling->set_slave_velocities(velocity, acceleration);
       }
     external_work = 0.;
 
@@ -132,7 +183,12 @@ namespace PeriArlequin
                                "fe_strain_energy",
                                "pd_kinetic_energy",
                                "pd_strain_energy",
-                               "broken_bonds"},
+                               "broken_bonds",
+                               "pure_pd_kinetic_energy",
+                               "pure_pd_strain_energy",
+                               "pure_pd_energy",
+                               "constraint_residual",
+                               "constraint_rate_residual"},
       output_parameters.energy_interval > 0 ?
         output_parameters.directory + "/" + output_parameters.base_name + "_energy.csv" :
         std::string(),
@@ -155,6 +211,13 @@ namespace PeriArlequin
           << " m/s" << std::endl;
     if (pd_zone && pd_parameters.fracture)
       pcout << "  critical stretch " << pd_zone->get_critical_stretch() << std::endl;
+    if (coupling)
+      {
+        const auto [n_overlap, n_slaves] = coupling->n_coupled_particles();
+        pcout << "  Arlequin coupling: " << n_overlap << " PD nodes in the overlap, "
+              << n_slaves << " slave particles, " << coupling->n_multipliers()
+              << " multipliers" << std::endl;
+      }
     setup_done = true;
   }
 
@@ -163,9 +226,18 @@ namespace PeriArlequin
   Simulator<dim>::setup_fe_zone()
   {
     fe_zone = std::make_unique<FEZone<dim>>(triangulation, fe_parameters, material);
-    fe_zone->setup(Functions::ConstantFunction<dim>(1., dim), [this](const auto &cell) {
-      return !(pd_zone && pd_zone->contains_cell(cell));
-    });
+    // Integral blending weighs mass and stiffness with alpha; force blending weighs the
+    // stiffness per node later; the bad coupling keeps the full FE over the overlap.
+    using Parameters::Blending;
+    using Parameters::CouplingMethod;
+    const bool     integral_mass = blending && coupling_parameters.method != CouplingMethod::bad;
+    const bool     integral_stiffness = integral_mass && coupling_parameters.blending != Blending::force;
+    const auto     one   = [](const Point<dim> &) { return 1.; };
+    const auto     alpha = [this](const Point<dim> &x) { return blending->value(x); };
+    using Weight = typename FEZone<dim>::WeightFunction;
+    fe_zone->setup(integral_mass ? Weight(alpha) : Weight(one),
+                   integral_stiffness ? Weight(alpha) : Weight(one),
+                   [this](const auto &cell) { return !(pd_zone && pd_zone->contains_cell(cell)); });
     prescribed_dofs = fe_zone->prescribed_dofs(problem_data);
     any_work_done   = problem_data.has_body_force || problem_data.has_tractions() ||
                     Utilities::MPI::logical_or(!prescribed_dofs.empty(), communicator);
@@ -175,7 +247,8 @@ namespace PeriArlequin
                           &internal_force,
                           &applied_force,
                           &previous_applied_force,
-                          &previous_displacement})
+                          &previous_displacement,
+                          &coupling_force})
       fe_zone->initialize_vector(*v);
   }
 
@@ -210,6 +283,16 @@ namespace PeriArlequin
       TimerOutput::Scope scope(timer, "FE internal forces");
       fe_zone->compute_internal_force(displacement, internal_force);
     }
+    coupling_force = 0.;
+    if (coupling)
+      {
+        TimerOutput::Scope scope(timer, "coupling");
+        if (coupling_parameters.blending == Parameters::Blending::force)
+          for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
+            internal_force.local_element(i) *= coupling->nodal_alpha()[i];
+        if (coupling_parameters.blending == Parameters::Blending::energy)
+          coupling->add_slave_forces(coupling_force);
+      }
     {
       TimerOutput::Scope scope(timer, "FE external forces");
       fe_zone->compute_external_force(problem_data, t, applied_force);
@@ -220,15 +303,18 @@ namespace PeriArlequin
     for (const auto &prescribed : prescribed_dofs)
       prescribed_acceleration.push_back(acceleration.local_element(prescribed.local_index));
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      acceleration.local_element(i) =
-        (applied_force.local_element(i) - internal_force.local_element(i)) / mass.local_element(i);
+      acceleration.local_element(i) = (applied_force.local_element(i) -
+                                       internal_force.local_element(i) +
+                                       coupling_force.local_element(i)) /
+                                      mass.local_element(i);
     // On prescribed DoFs the applied force includes the support reaction M a + K u - F_ext.
     for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
       {
         const unsigned int i            = prescribed_dofs[k].local_index;
         acceleration.local_element(i)  = prescribed_acceleration[k];
         applied_force.local_element(i) = mass.local_element(i) * prescribed_acceleration[k] +
-                                         internal_force.local_element(i);
+                                         internal_force.local_element(i) -
+                                         coupling_force.local_element(i);
       }
   }
 
@@ -252,9 +338,28 @@ namespace PeriArlequin
     time += dt;
     ++step;
 
+    // Predictor-corrector (eq. 58-69): slaves follow the predicted master field, trial
+    // accelerations and velocities without multipliers (with the fine-scale damping at the
+    // half-step velocities), then the multipliers restore d/dt g = 0.
+    if (fe_zone)
+      apply_prescribed_motion(time);
+    if (coupling)
+      {
+        TimerOutput::Scope scope(timer, "coupling");
+        coupling->set_slave_displacements(displacement);
+      }
+    if (pd_zone)
+      {
+        TimerOutput::Scope scope(timer, "PD forces");
+        pd_zone->compute_accelerations(time, problem_data);
+      }
+    if (coupling)
+      {
+        TimerOutput::Scope scope(timer, "coupling");
+        coupling->apply_damping(velocity);
+      }
     if (fe_zone)
       {
-        apply_prescribed_motion(time);
         compute_accelerations(time);
         velocity.add(0.5 * dt, acceleration);
         // Prescribed DoFs take the prescribed velocity, not the integrated one.
@@ -262,10 +367,12 @@ namespace PeriArlequin
           velocity.local_element(prescribed_dofs[k].local_index) = prescribed_velocity[k];
       }
     if (pd_zone)
+      pd_zone->correct(dt);
+    if (coupling)
       {
-        TimerOutput::Scope scope(timer, "PD forces");
-        pd_zone->compute_accelerations(time, problem_data);
-        pd_zone->correct(dt);
+        TimerOutput::Scope scope(timer, "coupling");
+        coupling->enforce_constraint(velocity, acceleration);
+        coupling->set_slave_velocities(velocity, acceleration);
       }
 
     if (fe_zone && any_work_done)
@@ -290,6 +397,9 @@ namespace PeriArlequin
     const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
     const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
     check_finite(kinetic + strain);
+    const auto pure_pd = pd_zone ? pd_zone->energies_in(monitor_region) : std::pair<double, double>();
+    const auto residuals = coupling ? coupling->constraint_residuals(displacement, velocity) :
+                                      std::pair<double, double>();
     energy_history->add_row({static_cast<double>(step),
                              time,
                              kinetic,
@@ -300,7 +410,12 @@ namespace PeriArlequin
                              fe_strain,
                              pd_kinetic,
                              pd_strain,
-                             broken});
+                             broken,
+                             pure_pd.first,
+                             pure_pd.second,
+                             pure_pd.first + pure_pd.second,
+                             residuals.first,
+                             residuals.second});
   }
 
   template <int dim>
@@ -333,6 +448,83 @@ namespace PeriArlequin
       fe_output->write(step, time, displacement, velocity);
     if (pd_zone)
       pd_zone->write_output(step, time, output_parameters.directory, output_parameters.base_name);
+    if (!sample_segment.empty())
+      write_line_samples();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_line_samples()
+  {
+    const Point<dim>     a = sample_segment[0];
+    const Tensor<1, dim> e = sample_segment[1] - a;
+    const auto distance = [&](const Point<dim> &x) {
+      const double s = std::clamp((x - a) * e / (e * e), 0., 1.);
+      return (x - (a + s * e)).norm();
+    };
+    // Rows: zone (0 FE, 1 PD), position, displacement.
+    std::vector<double> rows;
+    const auto          add_row = [&](const double zone, const Point<dim> &x, const Tensor<1, dim> &u) {
+      rows.push_back(zone);
+      for (unsigned int d = 0; d < dim; ++d)
+        rows.push_back(x[d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        rows.push_back(u[d]);
+    };
+    if (fe_zone)
+      {
+        std::vector<unsigned int> dofs, components;
+        std::vector<Point<dim>>   points;
+        fe_zone->support_points(dofs, points, components);
+        const double tolerance = 1e-9 * e.norm();
+        std::map<std::vector<double>, Tensor<1, dim>> nodes;
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          if (distance(points[k]) <= tolerance)
+            nodes[std::vector<double>(points[k].begin_raw(), points[k].end_raw())]
+                 [components[k]] = displacement.local_element(dofs[k]);
+        for (const auto &[x, u] : nodes)
+          {
+            Point<dim> p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = x[d];
+            add_row(0, p, u);
+          }
+      }
+    if (pd_zone)
+      for (unsigned int i = 0; i < pd_zone->n_owned; ++i)
+        if (distance(pd_zone->reference_position[i]) <=
+            0.5 * pd_parameters.lattice_spacing * (1. + 1e-9))
+          add_row(1, pd_zone->reference_position[i], pd_zone->displacement[i]);
+
+    const auto all = Utilities::MPI::gather(communicator, rows, 0);
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    const unsigned int                      width = 1 + 2 * dim;
+    std::vector<std::vector<double>>        sorted;
+    for (const auto &part : all)
+      for (unsigned int r = 0; r + width <= part.size(); r += width)
+        sorted.emplace_back(part.begin() + r, part.begin() + r + width);
+    std::sort(sorted.begin(), sorted.end(), [](const auto &x, const auto &y) {
+      return x[0] != y[0] ? x[0] < y[0] : x[1] < y[1];
+    });
+    std::ostringstream name;
+    name << output_parameters.directory << "/" << output_parameters.base_name << "_line_"
+         << std::setw(6) << std::setfill('0') << step << ".csv";
+    std::ofstream out(name.str());
+    const char *axes[] = {"x", "y", "z"};
+    out << "zone";
+    for (unsigned int d = 0; d < dim; ++d)
+      out << "," << axes[d];
+    for (unsigned int d = 0; d < dim; ++d)
+      out << ",u_" << axes[d];
+    out << "\n" << std::setprecision(12);
+    for (const auto &row : sorted)
+      {
+        out << (row[0] == 0 ? "fe" : "pd");
+        for (unsigned int k = 1; k < width; ++k)
+          out << "," << row[k];
+        out << "\n";
+      }
   }
 
   template <int dim>
@@ -399,6 +591,20 @@ namespace PeriArlequin
   Simulator<dim>::get_fe_zone() const
   {
     return *fe_zone;
+  }
+
+  template <int dim>
+  ArlequinCoupling<dim> *
+  Simulator<dim>::get_coupling()
+  {
+    return coupling.get();
+  }
+
+  template <int dim>
+  const BlendingField<dim> *
+  Simulator<dim>::get_blending_field() const
+  {
+    return blending.get();
   }
 
   template <int dim>

@@ -9,6 +9,8 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
+#include <periarlequin/coupling/arlequin_coupling.h>
+#include <periarlequin/coupling/blending_field.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
@@ -24,8 +26,9 @@ namespace PeriArlequin
    * Runs one case described by a parameter file: builds the mesh and the zones (FE where no
    * PD region covers a cell's centre, PD particles in the PD region), checks the time step
    * against the stable steps of both, integrates in time with velocity Verlet and writes
-   * fields, energies and progress. The zones are not coupled yet: a case is pure FE or pure
-   * PD, or has independent FE and PD bodies.
+   * fields, energies and progress. With Coupling/Method set, the zones overlap and are glued
+   * by ArlequinCoupling inside the predictor-corrector step of eq. 58-69; otherwise a case is
+   * pure FE or pure PD, or has independent FE and PD bodies.
    */
   template <int dim>
   class Simulator
@@ -48,9 +51,16 @@ namespace PeriArlequin
     void
     run();
 
-    /** One step of velocity Verlet from the current state. */
+    /** One step of velocity Verlet (predictor-corrector when coupled) from the current state. */
     void
     advance();
+
+    /** The coupling, or nullptr for an uncoupled case. */
+    ArlequinCoupling<dim> *
+    get_coupling();
+    /** The blending field, or nullptr for an uncoupled case. */
+    const BlendingField<dim> *
+    get_blending_field() const;
 
     /** The FE zone; only valid if the case has FE cells. */
     const FEZone<dim> &
@@ -79,7 +89,11 @@ namespace PeriArlequin
     /** Prescribed displacement and its central-difference velocity and acceleration. */
     void
     apply_prescribed_motion(const double time);
-    /** Accelerations M^-1 (F_ext - K u) on free DoFs and the applied force vector P. */
+    /**
+     * Accelerations M^-1 (F_ext - K u + F_c) on free DoFs and the applied force vector P;
+     * F_c = N^T f of the PD slaves under energy blending, and K u is weighted per node under
+     * force blending.
+     */
     void
     compute_accelerations(const double time);
     void
@@ -92,6 +106,9 @@ namespace PeriArlequin
     kinetic_energy() const;
     void
     write_output();
+    /** Displacements on Output/Sample line, gathered into one CSV on rank 0. */
+    void
+    write_line_samples();
     void
     report_progress(const unsigned int n_steps, const bool force);
 
@@ -106,11 +123,17 @@ namespace PeriArlequin
     Parameters::Time             time_parameters;
     Parameters::Output           output_parameters;
     Parameters::Peridynamics<dim> pd_parameters;
+    Parameters::Coupling         coupling_parameters;
     ProblemData<dim>             problem_data;
+    /** Where the pure-PD energies are measured; the sample segment (empty: none). */
+    Region<dim>                  monitor_region;
+    std::vector<Point<dim>>      sample_segment;
 
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FEZone<dim>>              fe_zone;
     std::unique_ptr<PDZone<dim>>              pd_zone;
+    std::unique_ptr<BlendingField<dim>>       blending;
+    std::unique_ptr<ArlequinCoupling<dim>>    coupling;
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::vector<typename FEZone<dim>::PrescribedDoF> prescribed_dofs;
@@ -120,6 +143,7 @@ namespace PeriArlequin
 
     VectorType   displacement, velocity, acceleration;
     VectorType   internal_force, applied_force, previous_applied_force, previous_displacement;
+    VectorType   coupling_force;
     double       time               = 0.;
     unsigned int step               = 0;
     double       stable_time_step   = 0.;

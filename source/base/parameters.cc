@@ -233,6 +233,19 @@ namespace PeriArlequin
                         "true",
                         Patterns::Bool(),
                         "Print the TimerOutput summary at the end of the run.");
+      prm.declare_entry("Sample line",
+                        "",
+                        Patterns::Anything(),
+                        "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
+                        "<base>_line_<step>.csv with the displacement of the FE nodes on it and "
+                        "of the PD particles within half a lattice spacing of it. Empty: none.");
+      prm.declare_entry("Monitor region",
+                        "",
+                        Patterns::Anything(),
+                        "Boxes 'lower : upper ; ...' [m]: the PD particles whose kinetic and "
+                        "strain energy the history records as pure_pd_* (e.g. the pure PD zone "
+                        "of a coupled run, in its pure-PD reference). Empty: "
+                        "Peridynamics/Region.");
       prm.leave_subsection();
     }
 
@@ -246,6 +259,8 @@ namespace PeriArlequin
       energy_interval   = prm.get_integer("Energy interval");
       progress_interval = prm.get_double("Progress interval");
       print_timing      = prm.get_bool("Print timing summary");
+      sample_line       = prm.get("Sample line");
+      monitor_region    = prm.get("Monitor region");
       prm.leave_subsection();
     }
   } // namespace Parameters

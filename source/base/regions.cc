@@ -3,7 +3,9 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace PeriArlequin
 {
@@ -54,6 +56,47 @@ namespace PeriArlequin
       if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
         return false;
     return true;
+  }
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  parse_segment(const std::string &text, const std::string &parameter)
+  {
+    const auto points = parse_points<dim>(text, 2, parameter, "a segment");
+    return {points[0], points[1]};
+  }
+
+  template <int dim>
+  double
+  Box<dim>::distance(const Point<dim> &p) const
+  {
+    double sum = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double outside = std::max({lower[d] - p[d], p[d] - upper[d], 0.});
+        sum += outside * outside;
+      }
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  Box<dim>::gap(const Box<dim> &other) const
+  {
+    Tensor<1, dim> g;
+    for (unsigned int d = 0; d < dim; ++d)
+      g[d] = std::max({other.lower[d] - upper[d], lower[d] - other.upper[d], 0.});
+    return g;
+  }
+
+  template <int dim>
+  double
+  Region<dim>::distance(const Point<dim> &p) const
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto &box : boxes)
+      nearest = std::min(nearest, box.distance(p));
+    return nearest;
   }
 
   template <int dim>
@@ -162,6 +205,10 @@ namespace PeriArlequin
     return cracks;
   }
 
+  template std::pair<Point<2>, Point<2>>
+  parse_segment<2>(const std::string &, const std::string &);
+  template std::pair<Point<3>, Point<3>>
+  parse_segment<3>(const std::string &, const std::string &);
   template struct Box<2>;
   template struct Box<3>;
   template struct Region<2>;

@@ -38,8 +38,11 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEZone<dim>::setup(const Function<dim> &blending_weight, const CellPredicate &in_fe_zone)
+  FEZone<dim>::setup(const WeightFunction &mass_weight_function,
+                     const WeightFunction &stiffness_weight,
+                     const CellPredicate  &in_fe_zone)
   {
+    mass_weight = mass_weight_function;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(in_fe_zone(cell) ? 0 : 1);
@@ -55,12 +58,12 @@ namespace PeriArlequin
     sparsity.compress();
     stiffness_matrix.reinit(sparsity);
     initialize_vector(mass);
-    assemble_mass_and_stiffness(blending_weight);
+    assemble_mass_and_stiffness(stiffness_weight);
   }
 
   template <int dim>
   void
-  FEZone<dim>::assemble_mass_and_stiffness(const Function<dim> &blending_weight)
+  FEZone<dim>::assemble_mass_and_stiffness(const WeightFunction &stiffness_weight)
   {
     const double lambda = material.effective_lambda(dim);
     const double mu     = material.shear_modulus();
@@ -93,14 +96,15 @@ namespace PeriArlequin
 
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const double weight = blending_weight.value(fe_values.quadrature_point(q)) *
-                                  fe_values.JxW(q);
+            const Point<dim> &x      = fe_values.quadrature_point(q);
+            const double      weight = stiffness_weight(x) * fe_values.JxW(q);
+            const double      m      = rho * mass_weight(x) * fe_values.JxW(q);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
                 strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
                 divergence[i] = trace(strain[i]);
                 // Row sum of the consistent mass: FE_Q shape functions sum to one.
-                cell_mass(i) += rho * fe_values.shape_value(i, q) * weight;
+                cell_mass(i) += fe_values.shape_value(i, q) * m;
               }
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               for (unsigned int j = 0; j <= i; ++j)
@@ -129,6 +133,44 @@ namespace PeriArlequin
                              std::to_string(mass.local_element(i)) +
                              "): the blending weight alpha must be positive somewhere on the "
                              "support of every FE node."));
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::support_points(std::vector<unsigned int> &local_dofs,
+                              std::vector<Point<dim>>   &points,
+                              std::vector<unsigned int> &components) const
+  {
+    // Cells are axis-aligned boxes: map the unit support points with the bounding box.
+    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> located;
+    std::vector<types::global_dof_index>          dof_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        const Point<dim> lower = cell->vertex(0);
+        const Point<dim> upper = cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+        const auto      &unit  = cell->get_fe().get_unit_support_points();
+        dof_indices.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          if (locally_owned_dofs.is_element(dof_indices[i]))
+            {
+              Point<dim> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = lower[d] + unit[i][d] * (upper[d] - lower[d]);
+              located[dof_indices[i]] = {p, cell->get_fe().system_to_component_index(i).first};
+            }
+      }
+    local_dofs.clear();
+    points.clear();
+    components.clear();
+    for (const auto &[dof, where] : located)
+      {
+        local_dofs.push_back(locally_owned_dofs.index_within_set(dof));
+        points.push_back(where.first);
+        components.push_back(where.second);
+      }
   }
 
   template <int dim>
@@ -164,17 +206,21 @@ namespace PeriArlequin
     auto &body_force = data.body_force;
     body_force.set_time(time);
 
-    const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {
-      for (const unsigned int q : values.quadrature_point_indices())
-        {
-          function.vector_value(values.quadrature_point(q), load);
-          for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
-            {
-              const unsigned int c = values.get_fe().system_to_component_index(i).first;
-              cell_force(i) += load(c) * values.shape_value(i, q) * values.JxW(q);
-            }
-        }
-    };
+    // The body force is blended like the mass; tractions act on the FE boundary as given.
+    const auto add_load =
+      [&](const FEValuesBase<dim> &values, Function<dim> &function, const bool blended) {
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const Point<dim> &x = values.quadrature_point(q);
+            function.vector_value(x, load);
+            const double JxW = (blended ? mass_weight(x) : 1.) * values.JxW(q);
+            for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
+              {
+                const unsigned int c = values.get_fe().system_to_component_index(i).first;
+                cell_force(i) += load(c) * values.shape_value(i, q) * JxW;
+              }
+          }
+      };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -184,7 +230,7 @@ namespace PeriArlequin
         if (data.has_body_force)
           {
             hp_fe_values.reinit(cell);
-            add_load(hp_fe_values.get_present_fe_values(), body_force);
+            add_load(hp_fe_values.get_present_fe_values(), body_force, true);
           }
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f))
@@ -194,7 +240,7 @@ namespace PeriArlequin
                 continue;
               condition.function->set_time(time);
               hp_face_values.reinit(cell, f);
-              add_load(hp_face_values.get_present_fe_values(), *condition.function);
+              add_load(hp_face_values.get_present_fe_values(), *condition.function, false);
             }
         dof_indices.resize(cell_force.size());
         cell->get_dof_indices(dof_indices);

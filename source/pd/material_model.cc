@@ -142,13 +142,15 @@ namespace PeriArlequin
   LinearPeridynamicSolid<dim>::compute_forces(const BondFamilies<dim>          &bonds,
                                               const std::vector<Tensor<1, dim>> &u,
                                               const std::vector<double>         &scalars,
+                                              const std::vector<double>         &state_weight,
                                               std::vector<Tensor<1, dim>>       &force_density,
                                               std::vector<double> &energy_density) const
   {
     // Per particle (owned and ghost), with t = alpha x + beta e_d, alpha = c (k theta -
     // beta S / 3) / q, beta = b / q: t = beta e + (alpha - beta theta / 3) x. So a bond's
     // pair force is t_ij + t_ji = (beta_i + beta_j) e + (a_i + a_j) x with
-    // a = alpha - beta theta / 3; theta / 3 is kept for the deviatoric energy.
+    // a = alpha - beta theta / 3; theta / 3 is kept for the deviatoric energy. The state
+    // weights scale each particle's force state, as they scale its energy.
     coefficients.resize(3 * bonds.n_total);
     for (unsigned int j = 0; j < bonds.n_total; ++j)
       {
@@ -156,8 +158,8 @@ namespace PeriArlequin
         const double beta  = b / q;
         const double theta = scalars[2 * j];
         const double alpha = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
-        coefficients[3 * j]     = beta;
-        coefficients[3 * j + 1] = alpha - beta * theta / 3.;
+        coefficients[3 * j]     = state_weight[j] * beta;
+        coefficients[3 * j + 1] = state_weight[j] * (alpha - beta * theta / 3.);
         coefficients[3 * j + 2] = theta / 3.;
       }
     std::fill(force_density.begin(), force_density.begin() + bonds.n_owned, Tensor<1, dim>());
@@ -195,7 +197,8 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       {
         const double theta = scalars[2 * i];
-        energy_density[i]  = 0.5 * k * theta * theta + 0.5 * coefficients[3 * i] * energy_density[i];
+        energy_density[i]  = 0.5 * state_weight[i] * k * theta * theta +
+                            0.5 * coefficients[3 * i] * energy_density[i];
       }
   }
 

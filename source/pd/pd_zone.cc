@@ -145,12 +145,17 @@ namespace PeriArlequin
   PDZone<dim>::PDZone(parallel::distributed::Triangulation<dim> &triangulation,
                       const Parameters::Peridynamics<dim>       &parameters,
                       const Parameters::Material                &material,
-                      const Parameters::Geometry                &geometry)
+                      const Parameters::Geometry                &geometry,
+                      const SiteFilter                          &extent)
     : triangulation(triangulation)
     , parameters(parameters)
     , material(material)
     , communicator(triangulation.get_communicator())
     , mapping(1)
+    , extent(extent ? extent : SiteFilter([this](const Point<dim> &x) {
+        return this->parameters.region.contains(x);
+      }))
+    , blending_weight([](const Point<dim> &) { return 0.; })
   {
     const double dx = parameters.lattice_spacing;
     for (unsigned int d = 0; d < dim; ++d)
@@ -257,7 +262,7 @@ namespace PeriArlequin
     unsigned int n            = 0;
     for_each_site<dim>(
       site_range<dim>(lower, upper, lattice_origin, parameters.lattice_spacing, n_sites),
-      [&](const auto &site) { n += parameters.region.contains(site_position(site)); });
+      [&](const auto &site) { n += extent(site_position(site)); });
     return 1000 + n * bonds.stencil.size();
   }
 
@@ -275,6 +280,7 @@ namespace PeriArlequin
     time_step = dt;
     generate_particles();
     check_horizon_covered();
+    compute_blending_weights();
     build_bonds();
     model->initialize(material, bonds);
     critical_stretch =
@@ -336,7 +342,7 @@ namespace PeriArlequin
         for_each_site<dim>(site_range<dim>(lower, upper, lattice_origin, dx, n_sites),
                            [&](const auto &site) {
                              const Point<dim> x = site_position(site);
-                             if (!parameters.region.contains(x))
+                             if (!extent(x))
                                return;
                              Point<dim> unit;
                              for (unsigned int d = 0; d < dim; ++d)
@@ -400,7 +406,8 @@ namespace PeriArlequin
   void
   PDZone<dim>::build_bonds()
   {
-    std::unordered_map<types::particle_index, unsigned int> local_index;
+    auto &local_index = local_index_of_id;
+    local_index.clear();
     local_index.reserve(particle_id.size());
     for (unsigned int i = 0; i < particle_id.size(); ++i)
       local_index[particle_id[i]] = i;
@@ -431,7 +438,7 @@ namespace PeriArlequin
             const auto found = local_index.find(site_id(other));
             if (found == local_index.end())
               {
-                AssertThrow(!parameters.region.contains(site_position(other)),
+                AssertThrow(!extent(site_position(other)),
                             ExcMessage("A neighbour within the horizon is neither owned nor a "
                                        "ghost particle: the ghost layer does not cover the "
                                        "horizon."));
@@ -530,7 +537,8 @@ namespace PeriArlequin
     model->compute_particle_scalars(bonds, displacement, model_scalars);
     if (model->n_particle_scalars() > 0)
       update_ghosts(model_scalars, model->n_particle_scalars());
-    model->compute_forces(bonds, displacement, model_scalars, force_density, energy_density);
+    model->compute_forces(
+      bonds, displacement, model_scalars, state_weight, force_density, energy_density);
   }
 
   template <int dim>
@@ -609,7 +617,8 @@ namespace PeriArlequin
     model->compute_particle_scalars(bonds, displacement, model_scalars);
     if (model->n_particle_scalars() > 0)
       update_ghosts(model_scalars, model->n_particle_scalars());
-    model->compute_forces(bonds, displacement, model_scalars, force_density, energy_density);
+    model->compute_forces(
+      bonds, displacement, model_scalars, state_weight, force_density, energy_density);
 
     const double   rho = material.density, volume = particle_volume();
     Vector<double> body(dim);
@@ -627,8 +636,11 @@ namespace PeriArlequin
             for (unsigned int d = 0; d < dim; ++d)
               b[d] = body(d);
           }
-        acceleration[i]  = (force_density[i] + b) / rho;
-        applied_force[i] = volume * b;
+        // A slave's acceleration is that of the FE field, set by the coupling.
+        if (!is_slave[i])
+          acceleration[i] = (force_weight[i] * force_density[i] + (1. - alpha[i]) * b) /
+                            (rho * mass_weight[i]);
+        applied_force[i] = (1. - alpha[i]) * volume * b;
       }
     for (unsigned int k = 0; k < prescribed_particles.size(); ++k)
       {
@@ -639,7 +651,7 @@ namespace PeriArlequin
             {
               acceleration[i][d] = prescribed_acceleration[k][d];
               // Load plus support reaction: m a - f V.
-              applied_force[i][d] = volume * (rho * acceleration[i][d] - force_density[i][d]);
+              applied_force[i][d] = particle_mass(i) * acceleration[i][d] - blended_force(i)[d];
             }
       }
 
@@ -714,12 +726,15 @@ namespace PeriArlequin
         const double eps = 1e-8 * parameters.lattice_spacing /
                            Utilities::MPI::max(max_entry, communicator);
         for (unsigned int i = 0; i < n_owned; ++i)
-          displacement[i] = eps * x[i];
+          displacement[i] = is_slave[i] ? Tensor<1, dim>() : eps * x[i];
         compute_internal_forces();
         double rayleigh = 0;
         for (unsigned int i = 0; i < n_owned; ++i)
           {
-            const Tensor<1, dim> y = -force_density[i] / (material.density * eps);
+            const Tensor<1, dim> y =
+              is_slave[i] ? Tensor<1, dim>() :
+                            -(force_weight[i] * force_density[i]) /
+                              (material.density * mass_weight[i] * eps);
             rayleigh += x[i] * y;
             x[i] = y;
           }
@@ -743,7 +758,8 @@ namespace PeriArlequin
   {
     double sum = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
-      sum += velocity[i] * velocity[i];
+      if (!is_slave[i])
+        sum += mass_weight[i] * (velocity[i] * velocity[i]);
     return 0.5 * material.density * particle_volume() * Utilities::MPI::sum(sum, communicator);
   }
 
@@ -751,10 +767,26 @@ namespace PeriArlequin
   double
   PDZone<dim>::strain_energy() const
   {
+    // With energy blending the model weighted the densities already.
     double sum = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
-      sum += energy_density[i];
+      sum += (energy_blending ? 1. : 1. - alpha[i]) * energy_density[i];
     return particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  PDZone<dim>::energies_in(const Region<dim> &region) const
+  {
+    double sums[2] = {0, 0};
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (region.contains(reference_position[i]))
+        {
+          sums[0] += velocity[i] * velocity[i];
+          sums[1] += energy_density[i];
+        }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {0.5 * material.density * particle_volume() * sums[0], particle_volume() * sums[1]};
   }
 
   template <int dim>
@@ -797,6 +829,110 @@ namespace PeriArlequin
   PDZone<dim>::particle_volume() const
   {
     return std::pow(parameters.lattice_spacing, dim);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::particle_mass(const unsigned int i) const
+  {
+    return material.density * particle_volume() * mass_weight[i];
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  PDZone<dim>::blended_force(const unsigned int i) const
+  {
+    return (force_weight[i] * particle_volume()) * force_density[i];
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_blending(const WeightFunction &alpha_function,
+                            const bool            energy,
+                            const double          minimum_weight)
+  {
+    blending_weight     = alpha_function;
+    energy_blending     = energy;
+    minimum_mass_weight = minimum_weight;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::compute_blending_weights()
+  {
+    // alpha is a function of the reference position: ghosts need no communication.
+    const unsigned int n_total = reference_position.size();
+    alpha.resize(n_total);
+    state_weight.resize(n_total);
+    for (unsigned int i = 0; i < n_total; ++i)
+      {
+        alpha[i]        = blending_weight(reference_position[i]);
+        state_weight[i] = energy_blending ? 1. - alpha[i] : 1.;
+      }
+    force_weight.resize(n_owned);
+    mass_weight.resize(n_owned);
+    is_slave.resize(n_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        is_slave[i]     = alpha[i] >= 1.;
+        force_weight[i] = energy_blending ? 1. : 1. - alpha[i];
+        mass_weight[i]  = std::max(1. - alpha[i], minimum_mass_weight);
+      }
+  }
+
+  template <int dim>
+  std::vector<typename Triangulation<dim>::active_cell_iterator>
+  PDZone<dim>::owned_particle_cells() const
+  {
+    std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+    cells.reserve(n_owned);
+    for (const auto &particle : particle_handler)
+      cells.push_back(particle.get_surrounding_cell());
+    return cells;
+  }
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, double>>
+  PDZone<dim>::lattice_interpolation(const Point<dim> &x) const
+  {
+    // Sites sit at cell centres of the lattice: the 2^dim around x and their weights.
+    const double                  dx = parameters.lattice_spacing;
+    std::array<long, dim>         base;
+    std::array<double, dim>       fraction;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double s = (x[d] - lattice_origin[d]) / dx - 0.5;
+        base[d]        = static_cast<long>(std::floor(s));
+        fraction[d]    = s - base[d];
+      }
+    std::vector<std::pair<unsigned int, double>> weights;
+    double                                       total = 0;
+    for (unsigned int corner = 0; corner < (1u << dim); ++corner)
+      {
+        std::array<unsigned int, dim> site;
+        double                        w      = 1;
+        bool                          inside = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const bool upper = corner & (1u << d);
+            const long s     = base[d] + upper;
+            inside           = inside && s >= 0 && s < static_cast<long>(n_sites[d]);
+            site[d]          = static_cast<unsigned int>(std::max(s, 0l));
+            w *= upper ? fraction[d] : 1. - fraction[d];
+          }
+        if (!inside || w == 0)
+          continue;
+        const auto found = local_index_of_id.find(site_id(site));
+        if (found == local_index_of_id.end())
+          continue;
+        weights.emplace_back(found->second, w);
+        total += w;
+      }
+    AssertThrow(total > 0,
+                ExcMessage("No PD particle next to a point that must follow the PD field."));
+    for (auto &entry : weights)
+      entry.second /= total;
+    return weights;
   }
 
   template <int dim>

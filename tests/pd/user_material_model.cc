@@ -52,6 +52,7 @@ namespace UserModels
     compute_forces(const BondFamilies<dim>          &bonds,
                    const std::vector<Tensor<1, dim>> &u,
                    const std::vector<double> &,
+                   const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>> &force_density,
                    std::vector<double>         &energy_density) const override
     {
@@ -67,14 +68,16 @@ namespace UserModels
             const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
             const Tensor<1, dim> y    = bond.xi + u[j] - u[i];
             const double         s    = (y.norm() - bond.length) / bond.length;
-            const Tensor<1, dim> pair = (micromodulus * s * bond.volume / y.norm()) * y;
+            // Half the bond energy belongs to each end, weighted by that end's state weight.
+            const double         w    = 0.5 * (state_weight[i] + state_weight[j]);
+            const Tensor<1, dim> pair = (w * micromodulus * s * bond.volume / y.norm()) * y;
             const double energy = 0.25 * micromodulus * s * s * bond.length * bond.volume;
             force_density[i] += pair;
-            energy_density[i] += energy;
+            energy_density[i] += state_weight[i] * energy;
             if (bonds.neighbor_is_owned(n))
               {
                 force_density[j] -= pair;
-                energy_density[j] += energy;
+                energy_density[j] += state_weight[j] * energy;
               }
           }
     }

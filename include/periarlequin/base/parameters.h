@@ -116,6 +116,10 @@ namespace PeriArlequin
       unsigned int energy_interval;
       double       progress_interval;
       bool         print_timing;
+      /** Segment "x0, y0 : x1, y1" along which displacements are sampled ("" for none). */
+      std::string  sample_line;
+      /** Boxes whose PD energies are recorded as the pure PD zone's ("" : the PD region). */
+      std::string  monitor_region;
 
       static void
       declare_parameters(ParameterHandler &prm);

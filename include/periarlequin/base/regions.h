@@ -19,6 +19,14 @@ namespace PeriArlequin
 
     bool
     contains(const Point<dim> &p, const double tolerance = 0.) const;
+
+    /** Euclidean distance from @p p to the box (0 inside). */
+    double
+    distance(const Point<dim> &p) const;
+
+    /** Per-axis gaps between this box and @p other (0 where they overlap in that axis). */
+    Tensor<1, dim>
+    gap(const Box<dim> &other) const;
   };
 
   /**
@@ -35,10 +43,19 @@ namespace PeriArlequin
     bool
     empty() const;
 
+    /** Euclidean distance from @p p to the nearest box (0 inside; infinity if empty). */
+    double
+    distance(const Point<dim> &p) const;
+
     /** Parse the text of @p parameter (named in errors) into a region. */
     static Region<dim>
     parse(const std::string &text, const std::string &parameter);
   };
+
+  /** Parse a segment "x0, y0 : x1, y1" (its two end points) from the text of @p parameter. */
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  parse_segment(const std::string &text, const std::string &parameter);
 
   /**
    * A pre-crack: a segment in 2D ("x0, y0 : x1, y1"), a parallelogram in 3D given by a corner

@@ -49,13 +49,26 @@ namespace PeriArlequin
            const Parameters::FiniteElements                &fe_parameters,
            const Parameters::Material                      &material);
 
+    /** A weight field in space (the Arlequin alpha, or 1). */
+    using WeightFunction = std::function<double(const Point<dim> &)>;
+
     /**
      * Distribute DoFs (FE_Q on cells where @p in_fe_zone holds, FE_Nothing on the others),
-     * then assemble the lumped mass int alpha rho N_I and the blended stiffness, both weighted
-     * by the @p blending_weight alpha(x) (1 for a pure FE problem).
+     * then assemble the lumped mass int alpha rho N_I (and the body force) with the
+     * @p mass_weight and the stiffness int alpha B^T D B with the @p stiffness_weight (both
+     * alpha(x) for integral blending, 1 for a pure FE problem). The weight functions must
+     * outlive the zone.
      */
     void
-    setup(const Function<dim> &blending_weight, const CellPredicate &in_fe_zone);
+    setup(const WeightFunction &mass_weight,
+          const WeightFunction &stiffness_weight,
+          const CellPredicate  &in_fe_zone);
+
+    /** The locally owned DoFs (local indices), their support points and components. */
+    void
+    support_points(std::vector<unsigned int> &local_dofs,
+                   std::vector<Point<dim>>   &points,
+                   std::vector<unsigned int> &components) const;
 
     /** Shape a vector with the locally owned and ghost DoFs of this zone. */
     void
@@ -106,7 +119,7 @@ namespace PeriArlequin
 
   private:
     void
-    assemble_mass_and_stiffness(const Function<dim> &blending_weight);
+    assemble_mass_and_stiffness(const WeightFunction &stiffness_weight);
 
     const parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Material                       material;
@@ -120,6 +133,7 @@ namespace PeriArlequin
     IndexSet                                         locally_relevant_dofs;
     TrilinosWrappers::SparseMatrix                   stiffness_matrix;
     VectorType                                       mass;
+    WeightFunction                                   mass_weight;
   };
 } // namespace PeriArlequin
 

@@ -53,12 +53,16 @@ namespace PeriArlequin
 
     /**
      * Force density [N/m^3] and strain-energy density [J/m^3] of every owned particle, from
-     * the displacements and scalars of owned and ghost particles.
+     * the displacements and scalars of owned and ghost particles. The energy of particle K
+     * enters the Hamiltonian with the weight @p state_weight[K] (owned and ghost; 1 - alpha_K
+     * for energy-based Arlequin blending, 1 otherwise): the force density of I must be
+     * -d/du_I sum_K state_weight[K] W_K V_K / V_I, and energy_density[I] = state_weight[I] W_I.
      */
     virtual void
     compute_forces(const BondFamilies<dim>          &bonds,
                    const std::vector<Tensor<1, dim>> &displacement,
                    const std::vector<double>         &scalars,
+                   const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>>       &force_density,
                    std::vector<double>               &energy_density) const = 0;
 
@@ -135,6 +139,7 @@ namespace PeriArlequin
     compute_forces(const BondFamilies<dim>          &bonds,
                    const std::vector<Tensor<1, dim>> &displacement,
                    const std::vector<double>         &scalars,
+                   const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>>       &force_density,
                    std::vector<double>               &energy_density) const override;
     double

@@ -16,6 +16,7 @@
 #include <periarlequin/pd/material_model.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -80,10 +81,33 @@ namespace PeriArlequin
   class PDZone
   {
   public:
+    /** Which lattice sites hold a particle. */
+    using SiteFilter = std::function<bool(const Point<dim> &)>;
+    /** The Arlequin blending weight alpha(x) (0: pure PD). */
+    using WeightFunction = std::function<double(const Point<dim> &)>;
+
+    /**
+     * A zone whose particles fill Peridynamics/Region, or, for a coupled run, the sites that
+     * @p extent accepts (the PD region, the overlap and a layer of slaves beyond it).
+     */
     PDZone(parallel::distributed::Triangulation<dim> &triangulation,
            const Parameters::Peridynamics<dim>       &parameters,
            const Parameters::Material                &material,
-           const Parameters::Geometry                &geometry);
+           const Parameters::Geometry                &geometry,
+           const SiteFilter                          &extent = SiteFilter());
+
+    /**
+     * Arlequin weights, set before setup(): particle I has the mass max(1 - alpha_I,
+     * @p minimum_mass_weight) rho V; its strain energy enters with the weight 1 - alpha_I,
+     * inside the bond sums (@p energy_blending: the forces are minus the derivative of the
+     * blended energy) or on the node (the force (1 - alpha_I) f_I, eq. 55). Particles with
+     * alpha = 1 are slaves: they complete the families of their neighbours and follow the FE
+     * field, set by the coupling.
+     */
+    void
+    set_blending(const WeightFunction &alpha,
+                 const bool            energy_blending,
+                 const double          minimum_mass_weight);
 
     /**
      * Weight of a cell for load balancing: 1000 (base) plus the bond count of the lattice
@@ -125,6 +149,9 @@ namespace PeriArlequin
     kinetic_energy() const;
     double
     strain_energy() const;
+    /** Kinetic and strain energy of the particles in @p region [J]. */
+    std::pair<double, double>
+    energies_in(const Region<dim> &region) const;
     /** Work of body forces and of the prescribed particles' reactions since the start. */
     double
     external_work() const;
@@ -153,8 +180,38 @@ namespace PeriArlequin
     std::vector<double>                model_scalars;
     BondFamilies<dim>                  bonds;
 
+    /** Blending weight alpha of owned and ghost particles. */
+    std::vector<double>        alpha;
+    /** Slave flag of owned particles (alpha = 1). */
+    std::vector<unsigned char> is_slave;
+
     double
     particle_volume() const;
+    /** Mass of owned particle @p i, weighted and floored [kg]. */
+    double
+    particle_mass(const unsigned int i) const;
+    /** Blended internal force on owned particle @p i [N] (a slave's feeds the FE nodes). */
+    Tensor<1, dim>
+    blended_force(const unsigned int i) const;
+
+    /** Cells of the owned particles, in local order. */
+    std::vector<typename Triangulation<dim>::active_cell_iterator>
+    owned_particle_cells() const;
+
+    /**
+     * Multilinear interpolation weights of the lattice at @p x: the local indices (owned or
+     * ghost) of the surrounding particles and their weights, renormalised over the sites that
+     * hold a particle.
+     */
+    std::vector<std::pair<unsigned int, double>>
+    lattice_interpolation(const Point<dim> &x) const;
+
+    /** Copy a per-particle field of owned particles to the ghosts through the particles. */
+    void
+    update_ghosts(std::vector<double> &values, const unsigned int n_per_particle);
+    /** Copy the owned displacements to the ghosts. */
+    void
+    update_ghost_displacements();
 
   private:
     void
@@ -163,11 +220,8 @@ namespace PeriArlequin
     build_bonds();
     void
     check_horizon_covered() const;
-    /** Copy a per-particle field of owned particles to the ghosts through the particles. */
     void
-    update_ghosts(std::vector<double> &values, const unsigned int n_per_particle);
-    void
-    update_ghost_displacements();
+    compute_blending_weights();
     void
     break_bonds();
     void
@@ -188,6 +242,14 @@ namespace PeriArlequin
     MappingQ<dim>                              mapping;
     Particles::ParticleHandler<dim>            particle_handler;
     std::unique_ptr<PDMaterialModel<dim>>      model;
+    SiteFilter                                 extent;
+    WeightFunction                             blending_weight;
+    bool                                       energy_blending     = false;
+    double                                     minimum_mass_weight = 1.;
+    /** Per particle: strain-energy weight inside the sums (owned and ghost), nodal force
+     * weight and mass weight (owned). */
+    std::vector<double>                        state_weight, force_weight, mass_weight;
+    std::unordered_map<types::particle_index, unsigned int> local_index_of_id;
 
     Point<dim>                   lattice_origin;
     std::array<unsigned int, dim> n_sites;

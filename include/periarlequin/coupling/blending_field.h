@@ -1,0 +1,112 @@
+#ifndef periarlequin_coupling_blending_field_h
+#define periarlequin_coupling_blending_field_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/regions.h>
+
+#include <string>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    /** How the two zones are glued. */
+    enum class CouplingMethod
+    {
+      /** No coupling: pure FE, pure PD or independent bodies. */
+      none,
+      /** Arlequin, one multiplier per PD node of the overlap (H = I). */
+      strict,
+      /** Arlequin, one multiplier per FE node of the overlap (H = N). */
+      weak,
+      /** The paper's fig. 8: master-slave across the two halves of the overlap. */
+      bad
+    };
+
+    /** Where the blending weight alpha enters the forces (see DESIGN.md section 2). */
+    enum class Blending
+    {
+      /** FE weight inside the integral (eq. 47b), PD weight per node (eq. 55). */
+      paper,
+      /** Weight inside the sums on both sides: forces derive from the blended Hamiltonian. */
+      energy,
+      /** Nodal weights on both sides: passes the patch test, not conservative. */
+      force
+    };
+
+    enum class MultiplierSolver
+    {
+      /** The paper's row-sum diagonal of A (eq. 68). */
+      diagonal,
+      /** Conjugate gradients on A, to a relative residual of 1e-12. */
+      cg
+    };
+
+    /** The Arlequin coupling: zones, blending, multipliers, fine-scale damping. */
+    struct Coupling
+    {
+      CouplingMethod   method;
+      /** Overlap (0 < alpha < 1) and pure FE (alpha = 1) regions; pure PD is the PD region. */
+      std::string      overlap_text, fe_region_text;
+      Blending         blending;
+      MultiplierSolver multiplier_solver;
+      bool             damping;
+      double           damping_constant;
+      double           damping_wave_speed;
+      double           damping_overlap_width;
+      double           minimum_mass_weight;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
+  /**
+   * The blending weight alpha(x) of eq. 37: 0 in the pure PD region, 1 in the pure FE region,
+   * alpha = l1 / (l1 + l2) in the overlap with l1 the distance to the pure PD region and l2 the
+   * distance to the pure FE region, so it is linear across a strip. For the "bad" coupling it
+   * is the step that splits the overlap into a PD-to-FE half (alpha = 0) and an FE-to-PD half
+   * (alpha = 1). The constructor checks the zones: they cover the domain, the alpha = 0 and
+   * alpha = 1 edges neither touch nor cross, and the overlap is at least one FE cell wide.
+   */
+  template <int dim>
+  class BlendingField
+  {
+  public:
+    BlendingField(const Parameters::Coupling &coupling,
+                  const Region<dim>          &pure_pd_region,
+                  const Parameters::Geometry &geometry);
+
+    /** alpha(x) in [0, 1]. */
+    double
+    value(const Point<dim> &x) const;
+
+    /** Is @p x in the overlap (both zones present)? Closed on both edges. */
+    bool
+    in_overlap(const Point<dim> &x) const;
+
+    /** Width of the overlap through @p x, l1 + l2 [m]. */
+    double
+    overlap_width(const Point<dim> &x) const;
+
+    /** Distance from @p x to the part where alpha < 1 (PD region and overlap) [m]. */
+    double
+    distance_to_pd_part(const Point<dim> &x) const;
+
+    const Region<dim> &
+    overlap() const;
+
+  private:
+    Parameters::CouplingMethod method;
+    Region<dim>                pure_pd, overlap_region, pure_fe;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,248 @@
+#include <periarlequin/coupling/blending_field.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace PeriArlequin
+{
+  namespace Parameters
+  {
+    void
+    Coupling::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Coupling");
+      prm.declare_entry("Method",
+                        "none",
+                        Patterns::Selection("none|strict|weak|bad"),
+                        "How the PD and FE zones are glued: none (uncoupled), strict (Arlequin, "
+                        "a Lagrange multiplier on every PD node of the overlap), weak (Arlequin, "
+                        "a multiplier on every FE node of the overlap), bad (the paper's fig. 8: "
+                        "PD nodes of the FE-side half of the overlap follow the FE field, FE "
+                        "nodes of the PD-side half follow the PD field).");
+      prm.declare_entry("Overlap region",
+                        "",
+                        Patterns::Anything(),
+                        "Boxes 'lower : upper ; ...' [m] where both zones live and alpha "
+                        "rises linearly from 0 (edge on the PD region) to 1 (edge on the FE "
+                        "region). Peridynamics/Region is the pure PD zone.");
+      prm.declare_entry("Finite element region",
+                        "",
+                        Patterns::Anything(),
+                        "Boxes 'lower : upper ; ...' [m] of the pure FE zone (alpha = 1). The PD "
+                        "region, the overlap and this region must cover the domain.");
+      prm.declare_entry("Blending",
+                        "energy",
+                        Patterns::Selection("paper|energy|force"),
+                        "Where alpha enters the forces: paper (FE weight inside the stiffness "
+                        "integral, PD force weighted per node, eq. 47b and 55), energy (the "
+                        "weight inside the sums on both sides, forces from the blended "
+                        "Hamiltonian), force (nodal weights on both sides, FE force alpha_I "
+                        "(K u)_I).");
+      prm.declare_entry("Multiplier solver",
+                        "diagonal",
+                        Patterns::Selection("diagonal|cg"),
+                        "How A lambda = H^T (N v* - w*) is solved: diagonal (the paper's "
+                        "row-sum diagonal of A, eq. 68) or cg (conjugate gradients to a relative "
+                        "residual of 1e-12).");
+      prm.declare_entry("Fine-scale damping",
+                        "true",
+                        Patterns::Bool(),
+                        "Damp the fine-scale velocity w - N v of the PD nodes of the overlap "
+                        "(eq. 76-80) with C_I = C v_w alpha_I^2 / L_B.");
+      prm.declare_entry("Damping constant",
+                        "30",
+                        Patterns::Double(0),
+                        "C of eq. 78 [-] (the paper's value is 30).");
+      prm.declare_entry("Damping wave speed",
+                        "0",
+                        Patterns::Double(0),
+                        "v_w of eq. 78 [m/s]; 0: the longitudinal wave speed of the material "
+                        "(plane stress or plane strain in 2D).");
+      prm.declare_entry("Damping overlap width",
+                        "0",
+                        Patterns::Double(0),
+                        "L_B of eq. 78 [m]; 0: the local width of the overlap, l1 + l2.");
+      prm.declare_entry("Minimum PD mass weight",
+                        "0.1",
+                        Patterns::Double(0, 1),
+                        "Floor of the PD mass weight: a PD node of the overlap has the mass "
+                        "max(1 - alpha_I, this) rho V, so that nodes next to the alpha = 1 edge "
+                        "keep a finite mass and the stable step stays that of the lattice [-].");
+      prm.leave_subsection();
+    }
+
+    void
+    Coupling::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Coupling");
+      const std::string m = prm.get("Method");
+      method              = m == "strict" ? CouplingMethod::strict :
+                            m == "weak"   ? CouplingMethod::weak :
+                            m == "bad"    ? CouplingMethod::bad :
+                                            CouplingMethod::none;
+      overlap_text        = prm.get("Overlap region");
+      fe_region_text      = prm.get("Finite element region");
+      const std::string b = prm.get("Blending");
+      blending            = b == "energy" ? Blending::energy :
+                            b == "force"  ? Blending::force :
+                                            Blending::paper;
+      multiplier_solver =
+        prm.get("Multiplier solver") == "cg" ? MultiplierSolver::cg : MultiplierSolver::diagonal;
+      damping               = prm.get_bool("Fine-scale damping");
+      damping_constant      = prm.get_double("Damping constant");
+      damping_wave_speed    = prm.get_double("Damping wave speed");
+      damping_overlap_width = prm.get_double("Damping overlap width");
+      minimum_mass_weight   = prm.get_double("Minimum PD mass weight");
+      prm.leave_subsection();
+      if (method != CouplingMethod::none && !(minimum_mass_weight > 0))
+        throw_invalid_parameter("Coupling/Minimum PD mass weight",
+                                minimum_mass_weight,
+                                "a value in (0, 1] when the zones are coupled");
+    }
+  } // namespace Parameters
+
+  namespace
+  {
+    template <int dim>
+    std::string
+    box_text(const Box<dim> &box)
+    {
+      std::ostringstream text;
+      text << box.lower << " : " << box.upper;
+      return text.str();
+    }
+  } // namespace
+
+  template <int dim>
+  BlendingField<dim>::BlendingField(const Parameters::Coupling &coupling,
+                                    const Region<dim>          &pure_pd_region,
+                                    const Parameters::Geometry &geometry)
+    : method(coupling.method)
+    , pure_pd(pure_pd_region)
+    , overlap_region(Region<dim>::parse(coupling.overlap_text, "Coupling/Overlap region"))
+    , pure_fe(Region<dim>::parse(coupling.fe_region_text, "Coupling/Finite element region"))
+  {
+    if (overlap_region.empty())
+      throw_invalid_parameter("Coupling/Overlap region",
+                              coupling.overlap_text,
+                              "at least one box when Coupling/Method is not none");
+    if (pure_pd.empty())
+      throw_invalid_parameter("Peridynamics/Region",
+                              "",
+                              "at least one box (the pure PD zone) when Coupling/Method is not "
+                              "none");
+    if (pure_fe.empty())
+      throw_invalid_parameter("Coupling/Finite element region",
+                              coupling.fe_region_text,
+                              "at least one box (the pure FE zone) when Coupling/Method is not "
+                              "none");
+
+    // Cell size of the mesh and a sample of points (vertices and centres of the cells).
+    std::array<unsigned int, dim> n_cells;
+    Tensor<1, dim>                h;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_cells[d] = geometry.subdivisions[d] << geometry.global_refinements;
+        h[d]       = (geometry.upper_corner[d] - geometry.lower_corner[d]) / n_cells[d];
+      }
+
+    // The alpha = 0 and alpha = 1 edges: apart by at least one cell across the overlap.
+    for (const auto &pd_box : pure_pd.boxes)
+      for (const auto &fe_box : pure_fe.boxes)
+        {
+          const Tensor<1, dim> gap = pd_box.gap(fe_box);
+          if (gap.norm() == 0)
+            throw_invalid_parameter("Coupling/Finite element region",
+                                    box_text(fe_box),
+                                    "boxes that neither touch nor cross the pure PD region "
+                                    "(here " + box_text(pd_box) +
+                                      "): the alpha = 0 and alpha = 1 edges must be an "
+                                      "overlap apart");
+          unsigned int across = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (gap[d] > gap[across])
+              across = d;
+          if (gap.norm() < h[across] * (1. - 1e-10))
+            {
+              std::ostringstream allowed;
+              allowed << "an overlap at least one FE cell (" << h[across]
+                      << " m) wide; between this box and the PD box " << box_text(pd_box)
+                      << " it is " << gap.norm() << " m";
+              throw_invalid_parameter("Coupling/Overlap region",
+                                      coupling.overlap_text,
+                                      allowed.str());
+            }
+        }
+
+    const double tolerance = 1e-10 * h.norm();
+    std::array<unsigned int, dim> index;
+    const auto                    visit = [&](const auto &self, const unsigned int d) -> void {
+      if (d == dim)
+        {
+          Point<dim> p;
+          for (unsigned int e = 0; e < dim; ++e)
+            p[e] = geometry.lower_corner[e] + 0.5 * index[e] * h[e];
+          if (!pure_pd.contains(p, tolerance) && !overlap_region.contains(p, tolerance) &&
+              !pure_fe.contains(p, tolerance))
+            {
+              std::ostringstream value;
+              value << p;
+              throw_invalid_parameter("Coupling/Finite element region",
+                                      coupling.fe_region_text,
+                                      "zones that cover the domain: the point " + value.str() +
+                                        " is in none of Peridynamics/Region, Coupling/Overlap "
+                                        "region and Coupling/Finite element region");
+            }
+          return;
+        }
+      for (index[d] = 0; index[d] <= 2 * n_cells[d]; ++index[d])
+        self(self, d + 1);
+    };
+    visit(visit, 0);
+  }
+
+  template <int dim>
+  double
+  BlendingField<dim>::value(const Point<dim> &x) const
+  {
+    const double l1 = pure_pd.distance(x), l2 = pure_fe.distance(x);
+    if (l1 == 0)
+      return 0.;
+    if (l2 == 0)
+      return 1.;
+    if (method == Parameters::CouplingMethod::bad)
+      return l1 < l2 ? 0. : 1.;
+    return l1 / (l1 + l2);
+  }
+
+  template <int dim>
+  bool
+  BlendingField<dim>::in_overlap(const Point<dim> &x) const
+  {
+    return overlap_region.contains(x, 1e-12 * overlap_width(x));
+  }
+
+  template <int dim>
+  double
+  BlendingField<dim>::overlap_width(const Point<dim> &x) const
+  {
+    return pure_pd.distance(x) + pure_fe.distance(x);
+  }
+
+  template <int dim>
+  double
+  BlendingField<dim>::distance_to_pd_part(const Point<dim> &x) const
+  {
+    return std::min(pure_pd.distance(x), overlap_region.distance(x));
+  }
+
+  template <int dim>
+  const Region<dim> &
+  BlendingField<dim>::overlap() const
+  {
+    return overlap_region;
+  }
+
+  template class BlendingField<2>;
+  template class BlendingField<3>;
+} // namespace PeriArlequin
