@@ -643,6 +643,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_acceleration() const
+  {
+    return acceleration;
+  }
+
+  template <int dim>
   double
   Simulator<dim>::get_time() const
   {

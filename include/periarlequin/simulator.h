@@ -76,6 +76,8 @@ namespace PeriArlequin
     get_displacement() const;
     const VectorType &
     get_velocity() const;
+    const VectorType &
+    get_acceleration() const;
     double
     get_time() const;
     double
