@@ -87,10 +87,11 @@ namespace PeriArlequin
         typename PDZone<dim>::SiteFilter extent;
         if (blending)
           {
-            // Particles fill the PD region and the overlap, plus the slaves: every site
-            // within the bonds' reach delta + dx/2 of them, so no weighted family is cut.
-            const double reach =
-              (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) * (1. + 1e-10);
+            // Particles fill the PD region and the overlap, plus the slaves: every site within
+            // two bond reaches (delta + dx/2) of them, so that no weighted particle has a cut
+            // family and neither has any of its neighbours, whose dilatation enters its force.
+            const double reach = 2. * (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) *
+                                 (1. + 1e-10);
             extent = [this, reach](const Point<dim> &x) {
               return blending->distance_to_pd_part(x) <= reach;
             };

@@ -72,9 +72,14 @@ namespace PeriArlequinTests
          << "  subsection Velocity\n    set Function expression = " << initial_velocity
          << "\n  end\nend\n";
     if (fixed_boundary)
-      for (unsigned int b = 0; b < 4; ++b)
-        text << "subsection Boundary " << b << "\n  set Type = displacement\n"
-             << "  set Function expression = " << initial_displacement << "\nend\n";
+      {
+        text << "subsection Boundary conditions\n";
+        for (unsigned int b = 0; b < 4; ++b)
+          text << "  subsection Boundary " << b << "\n    set Type = displacement\n"
+               << "    subsection Function\n      set Function expression = "
+               << initial_displacement << "\n    end\n  end\n";
+        text << "end\n";
+      }
     text << quiet_output();
     return text.str();
   }
