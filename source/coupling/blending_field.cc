@@ -153,9 +153,9 @@ namespace PeriArlequin
           const Tensor<1, dim> gap = pd_box.gap(fe_box);
           if (gap.norm() == 0)
             throw_invalid_parameter("Coupling/Finite element region",
-                                    box_text(fe_box),
+                                    coupling.fe_region_text,
                                     "boxes that neither touch nor cross the pure PD region "
-                                    "(here " + box_text(pd_box) +
+                                    "(here " + box_text(fe_box) + " meets " + box_text(pd_box) +
                                       "): the alpha = 0 and alpha = 1 edges must be an "
                                       "overlap apart");
           unsigned int across = 0;
