@@ -3,6 +3,7 @@
 
 #include "../tests.h"
 
+#include <cmath>
 #include <sstream>
 
 /**
@@ -85,9 +86,9 @@ namespace PeriArlequinTests
   }
 
   /**
-   * A strip [-1.2, 1.2] x [-0.04, 0.04]: pure PD on [-0.4, 0.4], overlaps 0.1 m (5 cells) on
-   * both sides, pure FE beyond; @p method "none" with @p all_pd makes the pure-PD reference
-   * (PD everywhere) and with !all_pd the pure-FE reference.
+   * A strip [-1.2, @p right_end] x [-0.04, 0.04] (FE cells 20 mm): pure PD on [-0.4, 0.4],
+   * overlaps 0.1 m (5 cells) on both sides, pure FE beyond; @p method "none" with @p all_pd
+   * makes the pure-PD reference (PD everywhere) and with !all_pd the pure-FE reference.
    */
   inline std::string
   strip_case(const std::string &method,
@@ -99,15 +100,18 @@ namespace PeriArlequinTests
              const std::string &initial_velocity,
              const double       time_step,
              const double       end_time,
-             const unsigned int energy_interval)
+             const unsigned int energy_interval,
+             const double       right_end = 1.2)
   {
-    std::ostringstream text;
+    std::ostringstream text, whole_strip, fe_region;
+    whole_strip << "-1.2, -0.04 : " << right_end << ", 0.04";
+    fe_region << "-1.2, -0.04 : -0.5, 0.04 ; 0.5, -0.04 : " << right_end << ", 0.04";
     text << "set Dimension = 2\n"
          << "subsection Geometry\n  set Lower corner = -1.2, -0.04\n"
-         << "  set Upper corner = 1.2, 0.04\n  set Subdivisions = 120, 4\nend\n"
+         << "  set Upper corner = " << right_end << ", 0.04\n  set Subdivisions = "
+         << static_cast<unsigned int>(std::round((right_end + 1.2) / 0.02)) << ", 4\nend\n"
          << aluminium() << "subsection Peridynamics\n  set Region = "
-         << (method == "none" ? (all_pd ? "-1.2, -0.04 : 1.2, 0.04" : "") :
-                                "-0.4, -0.04 : 0.4, 0.04")
+         << (method == "none" ? (all_pd ? whole_strip.str() : "") : "-0.4, -0.04 : 0.4, 0.04")
          << "\n  set Lattice spacing = 0.005\nend\n";
     if (method != "none")
       text << coupling_text(method,
@@ -115,7 +119,7 @@ namespace PeriArlequinTests
                             solver,
                             damping,
                             "-0.5, -0.04 : -0.4, 0.04 ; 0.4, -0.04 : 0.5, 0.04",
-                            "-1.2, -0.04 : -0.5, 0.04 ; 0.5, -0.04 : 1.2, 0.04");
+                            fe_region.str());
     text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
          << "\nend\n"
          << "subsection Initial conditions\n"
@@ -125,6 +129,43 @@ namespace PeriArlequinTests
          << "\n  end\nend\n"
          << quiet_output() << "subsection Output\n  set Energy interval = " << energy_interval
          << "\n  set Monitor region = -0.4, -0.04 : 0.4, 0.04\nend\n";
+    return text.str();
+  }
+
+  /**
+   * The paper's section 6.1 wave study at half its resolution: every length doubled (PD
+   * lattice 5 mm, m = 3.015; FE cells 40 mm; pulse of eq. 81 with w1 = 0.96 m, w2 = 6 cm,
+   * a1 = 0.6 mm), on a 4 m x 8 cm plate with pure PD on [-0.6, 0.6], overlaps of 5 FE cells
+   * (0.2 m) and FE beyond. The short 6 cm component (1.5 FE cells) cannot enter the FE zone:
+   * the coupling must absorb it. Energy is recorded every 1e-5 s up to 5e-4 s, the last time
+   * before the leading edge, reflected at a plate end, comes back to the overlap
+   * ((2 - 0.48 + 1.2) m at 5.3 km/s). @p method "none" runs PD on the whole plate.
+   */
+  inline std::string
+  half_resolution_wave_case(const std::string &method, const bool damping, const double time_step)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = -2.0, -0.04\n"
+         << "  set Upper corner = 2.0, 0.04\n  set Subdivisions = 100, 2\nend\n"
+         << aluminium() << "subsection Peridynamics\n  set Region = "
+         << (method == "none" ? "-2.0, -0.04 : 2.0, 0.04" : "-0.6, -0.04 : 0.6, 0.04")
+         << "\n  set Lattice spacing = 0.005\nend\n";
+    if (method != "none")
+      text << coupling_text(method,
+                            "energy",
+                            "diagonal",
+                            damping,
+                            "-0.8, -0.04 : -0.6, 0.04 ; 0.6, -0.04 : 0.8, 0.04",
+                            "-2.0, -0.04 : -0.8, 0.04 ; 0.8, -0.04 : 2.0, 0.04");
+    text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = 5e-4\nend\n"
+         << "subsection Initial conditions\n  subsection Displacement\n"
+         << "    set Function constants = a1=6e-4, a2=0.3, w1=0.96, w2=0.06\n"
+         << "    set Function expression = if(abs(x) <= w1/2, "
+         << "a1*(1+cos(2*pi*x/w1))*(1+a2*cos(2*pi*(x+w1/2)/w2)), 0); 0\n  end\nend\n"
+         << quiet_output() << "subsection Output\n  set Energy interval = "
+         << static_cast<unsigned int>(std::round(1e-5 / time_step))
+         << "\n  set Monitor region = -0.6, -0.04 : 0.6, 0.04\nend\n";
     return text.str();
   }
 } // namespace PeriArlequinTests

@@ -1,0 +1,94 @@
+// Rigid motion through the coupled model in 3D: a bar [-0.1, 0.1] x [0, 0.02]^2 (FE cells
+// 10 mm), pure PD on |x| <= 0.03 (lattice 2.5 mm, m = 3.015), overlaps 0.03 <= |x| <= 0.05
+// (two cells), FE beyond, all boundaries free. A rigid translation with a rigid velocity and
+// a small linearised rotation about an oblique axis (theta = 1e-12: the second-order stretch
+// theta^2 / 2 is far below round-off), strict and weak lambda-mesh, energy and force
+// blending. After 5 steps:
+//  - every acceleration, FE and PD, below 1e-10 of a_scale = c^2 u_max / h^2 (c the 3D
+//    longitudinal wave speed, h the FE cell);
+//  - |g| and |g_dot| below 1e-12 of u_max (v_max) times the square root of the number of
+//    multipliers.
+// Q1 elements and N reproduce linear fields exactly and rigid fields carry no strain in
+// either model (the PD surfaces do not matter), so anything above round-off is a defect of
+// the 3D coupling operators.
+
+#include "coupled_cases.h"
+
+using namespace PeriArlequinTests;
+
+namespace
+{
+  std::string
+  bar_case(const std::string &method,
+           const std::string &blending,
+           const std::string &displacement,
+           const std::string &velocity)
+  {
+    return "set Dimension = 3\n"
+           "subsection Geometry\n  set Lower corner = -0.1, 0, 0\n"
+           "  set Upper corner = 0.1, 0.02, 0.02\n  set Subdivisions = 20, 2, 2\nend\n" +
+           aluminium() +
+           "subsection Peridynamics\n  set Region = -0.03, 0, 0 : 0.03, 0.02, 0.02\n"
+           "  set Lattice spacing = 0.0025\nend\n" +
+           coupling_text(method,
+                         blending,
+                         "cg",
+                         false,
+                         "-0.05, 0, 0 : -0.03, 0.02, 0.02 ; 0.03, 0, 0 : 0.05, 0.02, 0.02",
+                         "-0.1, 0, 0 : -0.05, 0.02, 0.02 ; 0.05, 0, 0 : 0.1, 0.02, 0.02") +
+           "subsection Time\n  set Time step = 1e-7\n  set End time = 5e-7\nend\n"
+           "subsection Initial conditions\n  subsection Displacement\n"
+           "    set Function expression = " +
+           displacement + "\n  end\n  subsection Velocity\n    set Function expression = " +
+           velocity + "\n  end\nend\n" + quiet_output();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] {
+    struct Motion
+    {
+      std::string name, displacement, velocity;
+      double      u_max, v_max;
+    };
+    // rotation theta (1, 2, 3) / sqrt(14): u = theta x r
+    const std::vector<Motion> motions = {
+      {"translation", "1e-3; -5e-4; 2e-4", "0.1; 0.05; -0.02", 1e-3, 0.1},
+      {"rotation",
+       "1e-12*(2*z-3*y)/sqrt(14); 1e-12*(3*x-z)/sqrt(14); 1e-12*(y-2*x)/sqrt(14)",
+       "0; 0; 0",
+       1e-13,
+       0}};
+    const double nu = 0.3, c = std::sqrt(69e9 * (1 - nu) / (2700 * (1 + nu) * (1 - 2 * nu))),
+                 h  = 0.01;
+    for (const auto &motion : motions)
+      for (const std::string method : {"strict", "weak"})
+        for (const std::string blending : {"energy", "force"})
+          {
+            const std::string name = motion.name + ", " + method + ", " + blending;
+            auto              simulator =
+              make_simulator<3>(bar_case(method, blending, motion.displacement, motion.velocity));
+            simulator->run();
+            double      a_max = simulator->get_acceleration().linfty_norm();
+            const auto &pd    = *simulator->get_pd_zone();
+            for (unsigned int i = 0; i < pd.n_owned; ++i)
+              a_max = std::max(a_max, pd.acceleration[i].norm());
+            a_max = Utilities::MPI::max(a_max, MPI_COMM_WORLD);
+            check_below(name + ": max acceleration / a_scale",
+                        a_max / (c * c * motion.u_max / (h * h)),
+                        1e-10);
+            const auto residuals = simulator->get_coupling()->constraint_residuals(
+              simulator->get_displacement(), simulator->get_velocity());
+            const double rows = std::sqrt(simulator->get_coupling()->n_multipliers());
+            check_below(name + ": |g| / (u_max sqrt(rows))",
+                        residuals.first / (motion.u_max * rows),
+                        1e-12);
+            if (motion.v_max > 0)
+              check_below(name + ": |g_dot| / (v_max sqrt(rows))",
+                          residuals.second / (motion.v_max * rows),
+                          1e-12);
+          }
+  });
+}
