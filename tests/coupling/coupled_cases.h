@@ -4,6 +4,7 @@
 #include "../tests.h"
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 /**
@@ -133,39 +134,63 @@ namespace PeriArlequinTests
   }
 
   /**
-   * The paper's section 6.1 wave study at half its resolution: every length doubled (PD
-   * lattice 5 mm, m = 3.015; FE cells 40 mm; pulse of eq. 81 with w1 = 0.96 m, w2 = 6 cm,
-   * a1 = 0.6 mm), on a 4 m x 8 cm plate with pure PD on [-0.6, 0.6], overlaps of 5 FE cells
-   * (0.2 m) and FE beyond. The short 6 cm component (1.5 FE cells) cannot enter the FE zone:
-   * the coupling must absorb it. Energy is recorded every 1e-5 s up to 5e-4 s, the last time
-   * before the leading edge, reflected at a plate end, comes back to the overlap
-   * ((2 - 0.48 + 1.2) m at 5.3 km/s). @p method "none" runs PD on the whole plate.
+   * parameter_files/arlequin_wave_2d_coarse.prm (the paper's section 6.1 wave study with
+   * every length doubled: PD 5 mm, FE 40 mm, pure PD on [-0.6, 0.6], 0.2 m overlaps, FE
+   * beyond; run up to 5e-4 s, the last time before a wave comes back from the plate ends)
+   * under another coupling @p method, damping and time step; "none" runs PD on the whole
+   * plate. Energy is recorded every 1e-5 s, nothing else is written.
    */
   inline std::string
-  half_resolution_wave_case(const std::string &method, const bool damping, const double time_step)
+  coarse_wave_case(const std::string &method, const bool damping, const double time_step)
   {
+    std::ifstream file(PERIARLEQUIN_SOURCE_DIR "/parameter_files/arlequin_wave_2d_coarse.prm");
+    AssertThrow(file, ExcMessage("cannot read parameter_files/arlequin_wave_2d_coarse.prm"));
     std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = -2.0, -0.04\n"
-         << "  set Upper corner = 2.0, 0.04\n  set Subdivisions = 100, 2\nend\n"
-         << aluminium() << "subsection Peridynamics\n  set Region = "
-         << (method == "none" ? "-2.0, -0.04 : 2.0, 0.04" : "-0.6, -0.04 : 0.6, 0.04")
-         << "\n  set Lattice spacing = 0.005\nend\n";
-    if (method != "none")
-      text << coupling_text(method,
-                            "energy",
-                            "diagonal",
-                            damping,
-                            "-0.8, -0.04 : -0.6, 0.04 ; 0.6, -0.04 : 0.8, 0.04",
-                            "-2.0, -0.04 : -0.8, 0.04 ; 0.8, -0.04 : 2.0, 0.04");
-    text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = 5e-4\nend\n"
-         << "subsection Initial conditions\n  subsection Displacement\n"
-         << "    set Function constants = a1=6e-4, a2=0.3, w1=0.96, w2=0.06\n"
-         << "    set Function expression = if(abs(x) <= w1/2, "
-         << "a1*(1+cos(2*pi*x/w1))*(1+a2*cos(2*pi*(x+w1/2)/w2)), 0); 0\n  end\nend\n"
-         << quiet_output() << "subsection Output\n  set Energy interval = "
+    text << file.rdbuf() << "subsection Coupling\n  set Method = " << method
+         << "\n  set Fine-scale damping = " << (damping ? "true" : "false") << "\nend\n"
+         << "subsection Time\n  set Time step = " << time_step << "\nend\n";
+    if (method == "none")
+      text << "subsection Peridynamics\n  set Region = -2.0, -0.04 : 2.0, 0.04\nend\n";
+    text << quiet_output() << "subsection Output\n  set Energy interval = "
          << static_cast<unsigned int>(std::round(1e-5 / time_step))
          << "\n  set Monitor region = -0.6, -0.04 : 0.6, 0.04\nend\n";
+    return text.str();
+  }
+  /**
+   * A 3D bar [-0.1, 0.1] x [0, 0.02]^2 (FE cells 10 mm): pure PD on |x| <= 0.03 (lattice
+   * 2.5 mm, m = 3.015), overlaps 0.03 <= |x| <= 0.05 (two cells), pure FE beyond, all
+   * boundaries free.
+   */
+  inline std::string
+  bar_case_3d(const std::string &method,
+              const std::string &blending,
+              const std::string &solver,
+              const bool         damping,
+              const std::string &displacement,
+              const std::string &velocity,
+              const double       time_step,
+              const double       end_time)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 3\n"
+         << "subsection Geometry\n  set Lower corner = -0.1, 0, 0\n"
+         << "  set Upper corner = 0.1, 0.02, 0.02\n  set Subdivisions = 20, 2, 2\nend\n"
+         << aluminium()
+         << "subsection Peridynamics\n  set Region = -0.03, 0, 0 : 0.03, 0.02, 0.02\n"
+         << "  set Lattice spacing = 0.0025\nend\n"
+         << coupling_text(method,
+                          blending,
+                          solver,
+                          damping,
+                          "-0.05, 0, 0 : -0.03, 0.02, 0.02 ; 0.03, 0, 0 : 0.05, 0.02, 0.02",
+                          "-0.1, 0, 0 : -0.05, 0.02, 0.02 ; 0.05, 0, 0 : 0.1, 0.02, 0.02")
+         << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
+         << "\nend\n"
+         << "subsection Initial conditions\n  subsection Displacement\n"
+         << "    set Function expression = " << displacement
+         << "\n  end\n  subsection Velocity\n    set Function expression = " << velocity
+         << "\n  end\nend\n"
+         << quiet_output();
     return text.str();
   }
 } // namespace PeriArlequinTests

@@ -1,6 +1,5 @@
-// Rigid motion through the coupled model in 3D: a bar [-0.1, 0.1] x [0, 0.02]^2 (FE cells
-// 10 mm), pure PD on |x| <= 0.03 (lattice 2.5 mm, m = 3.015), overlaps 0.03 <= |x| <= 0.05
-// (two cells), FE beyond, all boundaries free. A rigid translation with a rigid velocity and
+// Rigid motion through the coupled model in 3D: the bar case of coupled_cases.h (PD middle,
+// two-cell overlaps, FE ends), all boundaries free. A rigid translation with a rigid velocity and
 // a small linearised rotation about an oblique axis (theta = 1e-12: the second-order stretch
 // theta^2 / 2 is far below round-off), strict and weak lambda-mesh, energy and force
 // blending. After 5 steps:
@@ -15,34 +14,6 @@
 #include "coupled_cases.h"
 
 using namespace PeriArlequinTests;
-
-namespace
-{
-  std::string
-  bar_case(const std::string &method,
-           const std::string &blending,
-           const std::string &displacement,
-           const std::string &velocity)
-  {
-    return "set Dimension = 3\n"
-           "subsection Geometry\n  set Lower corner = -0.1, 0, 0\n"
-           "  set Upper corner = 0.1, 0.02, 0.02\n  set Subdivisions = 20, 2, 2\nend\n" +
-           aluminium() +
-           "subsection Peridynamics\n  set Region = -0.03, 0, 0 : 0.03, 0.02, 0.02\n"
-           "  set Lattice spacing = 0.0025\nend\n" +
-           coupling_text(method,
-                         blending,
-                         "cg",
-                         false,
-                         "-0.05, 0, 0 : -0.03, 0.02, 0.02 ; 0.03, 0, 0 : 0.05, 0.02, 0.02",
-                         "-0.1, 0, 0 : -0.05, 0.02, 0.02 ; 0.05, 0, 0 : 0.1, 0.02, 0.02") +
-           "subsection Time\n  set Time step = 1e-7\n  set End time = 5e-7\nend\n"
-           "subsection Initial conditions\n  subsection Displacement\n"
-           "    set Function expression = " +
-           displacement + "\n  end\n  subsection Velocity\n    set Function expression = " +
-           velocity + "\n  end\nend\n" + quiet_output();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -68,8 +39,8 @@ main(int argc, char **argv)
         for (const std::string blending : {"energy", "force"})
           {
             const std::string name = motion.name + ", " + method + ", " + blending;
-            auto              simulator =
-              make_simulator<3>(bar_case(method, blending, motion.displacement, motion.velocity));
+            auto              simulator = make_simulator<3>(bar_case_3d(
+              method, blending, "cg", false, motion.displacement, motion.velocity, 1e-7, 5e-7));
             simulator->run();
             double      a_max = simulator->get_acceleration().linfty_norm();
             const auto &pd    = *simulator->get_pd_zone();
