@@ -193,6 +193,49 @@ namespace PeriArlequinTests
          << quiet_output();
     return text.str();
   }
+  /** A rigid motion for the rigid-motion tests: initial fields and their magnitudes. */
+  struct RigidMotion
+  {
+    std::string name, displacement, velocity;
+    double      u_max, v_max;
+  };
+
+  /**
+   * Runs a coupled case started in a rigid motion and checks that it stays untouched: every
+   * acceleration, FE and PD, below 1e-10 of a_scale = c^2 u_max / h^2 (the acceleration of
+   * a node displaced by u_max against fixed neighbours one cell h away, c a wave speed), and
+   * |g|, |g_dot| below 1e-12 of u_max, v_max times the square root of the number of
+   * multipliers.
+   */
+  template <int dim>
+  void
+  check_rigid_motion(const std::string &parameters,
+                     const std::string &name,
+                     const RigidMotion &motion,
+                     const double       c,
+                     const double       h)
+  {
+    auto simulator = make_simulator<dim>(parameters);
+    simulator->run();
+    double      a_max = simulator->get_acceleration().linfty_norm();
+    const auto &pd    = *simulator->get_pd_zone();
+    for (unsigned int i = 0; i < pd.n_owned; ++i)
+      a_max = std::max(a_max, pd.acceleration[i].norm());
+    a_max = Utilities::MPI::max(a_max, MPI_COMM_WORLD);
+    check_below(name + ": max acceleration / a_scale",
+                a_max / (c * c * motion.u_max / (h * h)),
+                1e-10);
+    const auto residuals = simulator->get_coupling()->constraint_residuals(
+      simulator->get_displacement(), simulator->get_velocity());
+    const double rows = std::sqrt(simulator->get_coupling()->n_multipliers());
+    check_below(name + ": |g| / (u_max sqrt(rows))",
+                residuals.first / (motion.u_max * rows),
+                1e-12);
+    if (motion.v_max > 0)
+      check_below(name + ": |g_dot| / (v_max sqrt(rows))",
+                  residuals.second / (motion.v_max * rows),
+                  1e-12);
+  }
 } // namespace PeriArlequinTests
 
 #endif

@@ -1,12 +1,13 @@
 // MPI: 2 ranks reproduce 1 rank for the weak coupling with the paper's diagonal multipliers
 // and fine-scale damping, and for the strict coupling under the paper's blending: the strip
 // case with the smooth pulse crossing the overlaps (300 steps); and in 3D, the weak coupling
-// with damping on the bar case, a pulse from the PD middle into both overlaps (100 steps). The partition puts the two overlaps on different
-// ranks and cuts PD families, FE cells and interpolation rows. Compared: every column of the
-// energy history at every step, including the constraint residuals. Tolerance 1e-10 relative
-// to each column's largest magnitude (sums in another order differ by round-off, ~1e-15 a
-// step). CG is left out here: its |g_dot| column is itself round-off (1e-12 m/s), so a
-// relative comparison of that column is meaningless.
+// with damping on the bar case, a pulse from the PD middle into both overlaps (100 steps).
+// The partition puts the two overlaps on different ranks and cuts PD families, FE cells and
+// interpolation rows. Compared: every column of the energy history at every step, including
+// the constraint residuals. Tolerance 1e-10 relative to each column's largest magnitude (sums
+// in another order differ by round-off, ~1e-15 a step). CG is left out here: its |g_dot|
+// column is itself round-off (1e-12 m/s), so a relative comparison of that column is
+// meaningless.
 
 #include "coupled_cases.h"
 
@@ -21,12 +22,14 @@ main(int argc, char **argv)
     const std::string pulse = "if(abs(x) < 0.2, 1e-4*cos(pi*x/0.4)^2, 0); 0";
     check_below("weak, diagonal, damping: 2 ranks vs 1 rank, max relative difference",
                 parallel_vs_serial_history_difference<2>(
-                  strip_case("weak", "energy", "diagonal", true, false, pulse, "0; 0", 2e-7, 6e-5, 1),
+                  strip_case(
+                    "weak", "energy", "diagonal", true, false, pulse, "0; 0", 2e-7, 6e-5, 1),
                   "weak"),
                 1e-10);
     check_below("strict, diagonal, paper blending: 2 ranks vs 1 rank, max relative difference",
                 parallel_vs_serial_history_difference<2>(
-                  strip_case("strict", "paper", "diagonal", false, false, pulse, "0; 0", 2e-7, 6e-5, 1),
+                  strip_case(
+                    "strict", "paper", "diagonal", false, false, pulse, "0; 0", 2e-7, 6e-5, 1),
                   "strict"),
                 1e-10);
     check_below("3D, weak, diagonal, damping: 2 ranks vs 1 rank, max relative difference",

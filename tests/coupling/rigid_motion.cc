@@ -1,7 +1,8 @@
 // Rigid motion passes through the coupled model untouched: on the ring case (PD centre,
 // overlap ring, FE outside, all boundaries free), a rigid translation with a rigid velocity,
 // and a small linearised rotation (theta = 1e-12, so the second-order stretch theta^2 / 2 is
-// 5e-25, far below round-off), for the strict and weak lambda-mesh and every blending. After 5 steps:
+// 5e-25, far below round-off), for the strict and weak lambda-mesh and every blending. After 5
+// steps (checks and bounds: check_rigid_motion in coupled_cases.h):
 //  - every acceleration, FE and PD, below 1e-10 of a_scale = c^2 u_max / h^2 (the acceleration
 //    of a node displaced by u_max against fixed neighbours one cell away);
 //  - the constraint residuals |g| and |g_dot| at round-off: below 1e-12 of u_max (v_max)
@@ -17,40 +18,18 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    struct Motion
-    {
-      std::string name, displacement, velocity;
-      double      u_max, v_max;
-    };
-    const std::vector<Motion> motions = {{"translation", "1e-3; -5e-4", "0.1; 0.05", 1e-3, 0.1},
-                                         {"rotation", "-1e-12*y; 1e-12*x", "0; 0", 2.9e-13, 0}};
-    const double c = std::sqrt(69e9 / (2700 * (1 - 0.09))), h = 0.02;
+    const std::vector<RigidMotion> motions = {
+      {"translation", "1e-3; -5e-4", "0.1; 0.05", 1e-3, 0.1},
+      {"rotation", "-1e-12*y; 1e-12*x", "0; 0", 2.9e-13, 0}};
+    const double c = std::sqrt(69e9 / (2700 * (1 - 0.09)));
     for (const auto &motion : motions)
       for (const std::string method : {"strict", "weak"})
         for (const std::string blending : {"paper", "energy", "force"})
-          {
-            const std::string name = motion.name + ", " + method + ", " + blending;
-            auto              simulator = make_simulator<2>(
-              ring_case(0.04, method, blending, motion.displacement, motion.velocity, false, 1e-6));
-            simulator->run();
-            double a_max = simulator->get_acceleration().linfty_norm();
-            const auto &pd = *simulator->get_pd_zone();
-            for (unsigned int i = 0; i < pd.n_owned; ++i)
-              a_max = std::max(a_max, pd.acceleration[i].norm());
-            a_max = Utilities::MPI::max(a_max, MPI_COMM_WORLD);
-            check_below(name + ": max acceleration / a_scale",
-                        a_max / (c * c * motion.u_max / (h * h)),
-                        1e-10);
-            const auto residuals = simulator->get_coupling()->constraint_residuals(
-              simulator->get_displacement(), simulator->get_velocity());
-            const double rows = std::sqrt(simulator->get_coupling()->n_multipliers());
-            check_below(name + ": |g| / (u_max sqrt(rows))",
-                        residuals.first / (motion.u_max * rows),
-                        1e-12);
-            if (motion.v_max > 0)
-              check_below(name + ": |g_dot| / (v_max sqrt(rows))",
-                          residuals.second / (motion.v_max * rows),
-                          1e-12);
-          }
+          check_rigid_motion<2>(
+            ring_case(0.04, method, blending, motion.displacement, motion.velocity, false, 1e-6),
+            motion.name + ", " + method + ", " + blending,
+            motion,
+            c,
+            0.02);
   });
 }

@@ -19,47 +19,29 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    struct Motion
-    {
-      std::string name, displacement, velocity;
-      double      u_max, v_max;
-    };
     // rotation theta (1, 2, 3) / sqrt(14): u = theta x r
-    const std::vector<Motion> motions = {
+    const std::vector<RigidMotion> motions = {
       {"translation", "1e-3; -5e-4; 2e-4", "0.1; 0.05; -0.02", 1e-3, 0.1},
       {"rotation",
        "1e-12*(2*z-3*y)/sqrt(14); 1e-12*(3*x-z)/sqrt(14); 1e-12*(y-2*x)/sqrt(14)",
        "0; 0; 0",
        1e-13,
        0}};
-    const double nu = 0.3, c = std::sqrt(69e9 * (1 - nu) / (2700 * (1 + nu) * (1 - 2 * nu))),
-                 h  = 0.01;
+    const double nu = 0.3, c = std::sqrt(69e9 * (1 - nu) / (2700 * (1 + nu) * (1 - 2 * nu)));
     for (const auto &motion : motions)
       for (const std::string method : {"strict", "weak"})
         for (const std::string blending : {"energy", "force"})
-          {
-            const std::string name = motion.name + ", " + method + ", " + blending;
-            auto              simulator = make_simulator<3>(bar_case_3d(
-              method, blending, "cg", false, motion.displacement, motion.velocity, 1e-7, 5e-7));
-            simulator->run();
-            double      a_max = simulator->get_acceleration().linfty_norm();
-            const auto &pd    = *simulator->get_pd_zone();
-            for (unsigned int i = 0; i < pd.n_owned; ++i)
-              a_max = std::max(a_max, pd.acceleration[i].norm());
-            a_max = Utilities::MPI::max(a_max, MPI_COMM_WORLD);
-            check_below(name + ": max acceleration / a_scale",
-                        a_max / (c * c * motion.u_max / (h * h)),
-                        1e-10);
-            const auto residuals = simulator->get_coupling()->constraint_residuals(
-              simulator->get_displacement(), simulator->get_velocity());
-            const double rows = std::sqrt(simulator->get_coupling()->n_multipliers());
-            check_below(name + ": |g| / (u_max sqrt(rows))",
-                        residuals.first / (motion.u_max * rows),
-                        1e-12);
-            if (motion.v_max > 0)
-              check_below(name + ": |g_dot| / (v_max sqrt(rows))",
-                          residuals.second / (motion.v_max * rows),
-                          1e-12);
-          }
+          check_rigid_motion<3>(bar_case_3d(method,
+                                            blending,
+                                            "cg",
+                                            false,
+                                            motion.displacement,
+                                            motion.velocity,
+                                            1e-7,
+                                            5e-7),
+                                motion.name + ", " + method + ", " + blending,
+                                motion,
+                                c,
+                                0.01);
   });
 }
