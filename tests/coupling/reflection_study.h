@@ -13,13 +13,16 @@
  *
  * Part of that energy is not reflected at all: in the 8 cm plate the 6 cm component splits
  * into slow plate modes, and the pure-PD reference (PD on the whole plate) itself keeps
- * about 4 % in the pure PD zone at 5e-4 s. So the study asserts on the energy the coupling
- * adds to the reference's, the "excess"; the raw values and their ratio are reported. The
+ * about 4 % in the pure PD zone at 5e-4 s, which bounds the raw ratio bad / weak from above
+ * (by about 0.52 / 0.041 = 12.7). So the study asserts on the energy the coupling adds to the
+ * reference's, the "excess", as well as on the raw ratio. The
  * reference runs at dt = 1e-7 s for both time steps: velocity Verlet's phase error,
  * (omega dt)^2 / 24, is 1.3e-4 there for the 6 cm component (omega = 5.5e5 rad/s), far
  * below the bounds below.
  *
  * Bounds (measured at dt = 1e-7 s / 1e-8 s):
+ *  - energy left, bad / weak + damping, at least 10 (the issue's factor; measured 11.2 /
+ *    10.5, below the 12.7 that a weak coupling reflecting nothing would reach);
  *  - weak + damping: excess below 1 % of the initial energy (measured 0.53 % / 0.85 %): the
  *    order of the paper's "less than 1 % left" criterion;
  *  - bad: excess above 10 % (measured 48 % / 48 %: it sends back most of the 6 cm
@@ -53,7 +56,7 @@ namespace PeriArlequinTests
     const double weak = run("weak", true, time_step);
     report("bad: energy left in pure PD / initial", bad);
     report("weak + damping: energy left in pure PD / initial", weak);
-    report("energy left, bad / weak + damping", bad / weak);
+    check_above("energy left, bad / weak + damping", bad / weak, 10.);
     check_below("weak + damping: excess over the reference", weak - reference, 1e-2);
     check_above("bad: excess over the reference", bad - reference, 0.1);
     check_above("excess over the reference, bad / weak + damping",
