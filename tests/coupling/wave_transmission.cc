@@ -113,8 +113,7 @@ main(int argc, char **argv)
         const auto   coupled = run(method, "energy", false);
         if (method == "weak")
           undamped_rise = drift(*coupled).second;
-        const double left =
-          final_pure_pd_energy(*coupled) / initial;
+        const double left = final_pure_pd_energy(*coupled) / initial;
         check_below(method + ", energy blending: reflected energy (left in pure PD minus "
                              "reference) / initial",
                     left - left_ref,
