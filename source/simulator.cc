@@ -532,9 +532,12 @@ namespace PeriArlequin
   void
   Simulator<dim>::report_progress(const unsigned int n_steps, const bool force)
   {
-    const double wall = wall_clock.wall_time();
-    if (output_parameters.progress_interval <= 0 ||
-        (!force && wall - last_progress_time < output_parameters.progress_interval))
+    if (output_parameters.progress_interval <= 0)
+      return;
+    // The clocks of the ranks differ, and the finiteness check below is collective: rank 0's
+    // clock decides for all.
+    const double wall = Utilities::MPI::broadcast(communicator, wall_clock.wall_time(), 0);
+    if (!force && wall - last_progress_time < output_parameters.progress_interval)
       return;
     last_progress_time = wall;
     // Energies may not be recorded: make sure the state is finite when progress is shown.
