@@ -505,8 +505,12 @@ namespace PeriArlequin
     for (const auto &part : all)
       for (unsigned int r = 0; r + width <= part.size(); r += width)
         sorted.emplace_back(part.begin() + r, part.begin() + r + width);
-    std::sort(sorted.begin(), sorted.end(), [](const auto &x, const auto &y) {
-      return x[0] != y[0] ? x[0] < y[0] : x[1] < y[1];
+    // by zone, then position: the same file whatever the partition
+    std::sort(sorted.begin(), sorted.end(), [](const auto &a, const auto &b) {
+      return std::lexicographical_compare(a.begin(),
+                                          a.begin() + 1 + dim,
+                                          b.begin(),
+                                          b.begin() + 1 + dim);
     });
     std::ostringstream name;
     name << output_parameters.directory << "/" << output_parameters.base_name << "_line_"
