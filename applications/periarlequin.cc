@@ -53,14 +53,26 @@ namespace
     prm.set("Dimension", std::to_string(dim));
     prm.print_parameters(std::cout, ParameterHandler::PRM);
   }
+
+  /**
+   * After an error: on several ranks, end them all, since a rank whose error was its own would
+   * otherwise leave the others waiting in their next collective call.
+   */
+  int
+  fail()
+  {
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const std::string first = argc > 1 ? argv[1] : "";
       if (first == "--print-parameters")
@@ -101,12 +113,12 @@ main(int argc, char **argv)
       // The message alone: input errors are for users, not a stack trace.
       std::cerr << "\nError:\n";
       error.print_info(std::cerr);
-      return 1;
+      return fail();
     }
   catch (const std::exception &error)
     {
       std::cerr << "\nError: " << error.what() << std::endl;
-      return 1;
+      return fail();
     }
   return 0;
 }

@@ -1,5 +1,6 @@
 ## Runs the application on one invalid parameter file and checks that it fails cleanly.
-## The expected message comes from -DEXPECT or else from the file's first line.
+## The expected message comes from -DEXPECT or else from the file's first line; -DLAUNCHER
+## (a list, e.g. mpiexec;-np;2) runs it on several ranks.
 if(DEFINED EXPECT)
   set(_expected "${EXPECT}")
 else()
@@ -9,7 +10,7 @@ else()
     message(FATAL_ERROR "${PRM}: the first line must read '# expect: <regex>'.")
   endif()
 endif()
-execute_process(COMMAND ${APP} ${PRM}
+execute_process(COMMAND ${LAUNCHER} ${APP} ${PRM}
   RESULT_VARIABLE _result OUTPUT_VARIABLE _out ERROR_VARIABLE _err TIMEOUT 120)
 set(_all "${_out}${_err}")
 if("${_result}" STREQUAL "0")
