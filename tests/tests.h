@@ -57,6 +57,14 @@ namespace PeriArlequinTests
     return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   }
 
+  /** Stop a test written for exactly two ranks when run on another number. */
+  inline void
+  require_two_ranks()
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+                ExcMessage("this test runs on 2 ranks"));
+  }
+
   /** The verdict file on rank 0. */
   inline std::ostream &
   verdicts()

@@ -86,6 +86,9 @@ namespace PeriArlequinTests
     return text.str();
   }
 
+  /** A smooth pulse for the strip case: u_x = 1e-4 cos^2(pi x / 0.4) m on |x| < 0.2 m. */
+  inline const std::string smooth_pulse = "if(abs(x) < 0.2, 1e-4*cos(pi*x/0.4)^2, 0); 0";
+
   /**
    * A strip [-1.2, @p right_end] x [-0.04, 0.04] (FE cells 20 mm): pure PD on [-0.4, 0.4],
    * overlaps 0.1 m (5 cells) on both sides, pure FE beyond; @p method "none" with @p all_pd

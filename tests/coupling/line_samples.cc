@@ -33,11 +33,10 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-                ExcMessage("this test runs on 2 ranks"));
-    const std::string pulse = "if(abs(x) < 0.2, 1e-4*cos(pi*x/0.4)^2, 0); 0";
+    require_two_ranks();
     const auto        text  = [&](const std::string &directory) {
-      return strip_case("weak", "energy", "diagonal", true, false, pulse, "0; 0", 2e-7, 6e-5, 1) +
+      return strip_case(
+               "weak", "energy", "diagonal", true, false, smooth_pulse, "0; 0", 2e-7, 6e-5, 1) +
              "subsection Output\n  set Directory = " + directory +
              "\n  set Output interval = 100\n  set Sample line = -1.2, 0 : 1.2, 0\nend\n";
     };

@@ -37,7 +37,7 @@ namespace
     double      end_time, right_end;
   };
 
-  const Pulse outgoing{"if(abs(x) < 0.2, 1e-4*cos(pi*x/0.4)^2, 0); 0", "0; 0", 1.6e-4, 1.2};
+  const Pulse outgoing{smooth_pulse, "0; 0", 1.6e-4, 1.2};
   const Pulse incoming{"if(abs(x-1) < 0.2, 1e-4*cos(pi*(x-1)/0.4)^2, 0); "
                        "if(abs(x-1) < 0.2, 0.3*1e-4*pi/0.4*sin(2*pi*(x-1)/0.4)*y, 0)",
                        "if(abs(x-1) < 0.2, -5055*1e-4*pi/0.4*sin(2*pi*(x-1)/0.4), 0); "

@@ -54,8 +54,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-                ExcMessage("this test runs on 2 ranks"));
+    require_two_ranks();
     compare_one_and_two_ranks<2>();
     compare_one_and_two_ranks<3>();
   });

@@ -18,8 +18,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
-                ExcMessage("this test runs on 2 ranks"));
+    require_two_ranks();
     check_below("2D pre-cracked plate, 2 ranks vs 1 rank, max relative difference",
                 parallel_vs_serial_history_difference<2>(plate_parameters(8e-4, true, 300),
                                                          "2D plate"),
