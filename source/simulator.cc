@@ -90,8 +90,8 @@ namespace PeriArlequin
             // Particles fill the PD region and the overlap, plus the slaves: every site within
             // two bond reaches (delta + dx/2) of them, so that no weighted particle has a cut
             // family and neither has any of its neighbours, whose dilatation enters its force.
-            const double reach = 2. * (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) *
-                                 (1. + 1e-10);
+            const double reach =
+              2. * (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) * (1. + 1e-10);
             extent = [this, reach](const Point<dim> &x) {
               return blending->distance_to_pd_part(x) <= reach;
             };
@@ -232,7 +232,8 @@ namespace PeriArlequin
     using Parameters::Blending;
     using Parameters::CouplingMethod;
     const bool     integral_mass = blending && coupling_parameters.method != CouplingMethod::bad;
-    const bool     integral_stiffness = integral_mass && coupling_parameters.blending != Blending::force;
+    const bool     integral_stiffness =
+      integral_mass && coupling_parameters.blending != Blending::force;
     const auto     one   = [](const Point<dim> &) { return 1.; };
     const auto     alpha = [this](const Point<dim> &x) { return blending->value(x); };
     using Weight = typename FEZone<dim>::WeightFunction;
@@ -398,7 +399,8 @@ namespace PeriArlequin
     const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
     const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
     check_finite(kinetic + strain);
-    const auto pure_pd = pd_zone ? pd_zone->energies_in(monitor_region) : std::pair<double, double>();
+    const auto pure_pd =
+      pd_zone ? pd_zone->energies_in(monitor_region) : std::pair<double, double>();
     const auto residuals = coupling ? coupling->constraint_residuals(displacement, velocity) :
                                       std::pair<double, double>();
     energy_history->add_row({static_cast<double>(step),
@@ -465,7 +467,7 @@ namespace PeriArlequin
     };
     // Rows: zone (0 FE, 1 PD), position, displacement.
     std::vector<double> rows;
-    const auto          add_row = [&](const double zone, const Point<dim> &x, const Tensor<1, dim> &u) {
+    const auto add_row = [&](const double zone, const Point<dim> &x, const Tensor<1, dim> &u) {
       rows.push_back(zone);
       for (unsigned int d = 0; d < dim; ++d)
         rows.push_back(x[d]);

@@ -152,7 +152,9 @@ namespace PeriArlequin
         allowed << "a value for which C v_w alpha^2 / L_B x dt < 1 (here " << largest * dt
                 << "): explicit damping over-damps and turns unstable beyond; lower C or the "
                    "time step";
-        throw_invalid_parameter("Coupling/Damping constant", parameters.damping_constant, allowed.str());
+        throw_invalid_parameter("Coupling/Damping constant",
+                                parameters.damping_constant,
+                                allowed.str());
       }
 
     overlap_values.resize(overlap_rows.size());

@@ -80,7 +80,9 @@ namespace PeriArlequin
 
     /** External force at time @p time: alpha-weighted body force plus boundary tractions. */
     void
-    compute_external_force(const ProblemData<dim> &data, const double time, VectorType &force) const;
+    compute_external_force(const ProblemData<dim> &data,
+                           const double            time,
+                           VectorType             &force) const;
 
     /** Nodal interpolation of a dim-component function. */
     void
