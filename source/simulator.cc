@@ -120,19 +120,19 @@ namespace PeriArlequin
     const double dt  = time_parameters.time_step;
     stable_time_step = std::numeric_limits<double>::max();
     if (fe_zone)
-      stable_time_step =
-        fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
+      {
+        stable_time_step =
+          fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
+        fe_zone->initialize_state(problem_data, dt);
+      }
     if (pd_zone)
       {
         pd_zone->setup(problem_data, dt);
         if (blending)
           {
-            std::vector<unsigned int> fixed;
-            for (const auto &prescribed : prescribed_dofs)
-              fixed.push_back(prescribed.local_index);
             coupling = std::make_unique<ArlequinCoupling<dim>>(
               coupling_parameters, *blending, material, *fe_zone, *pd_zone);
-            coupling->setup(fixed, dt);
+            coupling->setup(dt);
           }
         stable_time_step =
           std::min(stable_time_step,
@@ -146,26 +146,15 @@ namespace PeriArlequin
         throw_invalid_parameter("Time/Time step", dt, allowed.str());
       }
 
-    time = 0.;
-    step = 0;
+    if (pd_zone)
+      zones.push_back(pd_zone.get());
     if (fe_zone)
-      {
-        problem_data.initial_displacement.set_time(0.);
-        problem_data.initial_velocity.set_time(0.);
-        fe_zone->interpolate(problem_data.initial_displacement, displacement);
-        fe_zone->interpolate(problem_data.initial_velocity, velocity);
-        apply_prescribed_motion(time);
-        if (coupling)
-          {
-            // Slaves start on the FE field; their neighbours' forces follow.
-            coupling->set_slave_displacements(displacement);
-            pd_zone->compute_accelerations(time, problem_data);
-          }
-        compute_accelerations(time);
-        if (coupling)
-          coupling->set_slave_velocities(velocity, acceleration);
-      }
-    external_work = 0.;
+      zones.push_back(fe_zone.get());
+    n_steps = static_cast<unsigned int>(
+      std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
+    integrator = std::make_unique<PredictorCorrector<dim>>(
+      zones, coupling.get(), dt, n_steps, timer);
+    integrator->initialize();
 
     if (output_parameters.output_interval > 0 || output_parameters.energy_interval > 0)
       {
@@ -240,150 +229,20 @@ namespace PeriArlequin
     fe_zone->setup(integral_mass ? Weight(alpha) : Weight(one),
                    integral_stiffness ? Weight(alpha) : Weight(one),
                    [this](const auto &cell) { return !(pd_zone && pd_zone->contains_cell(cell)); });
-    prescribed_dofs = fe_zone->prescribed_dofs(problem_data);
-    any_work_done   = problem_data.has_body_force || problem_data.has_tractions() ||
-                    Utilities::MPI::logical_or(!prescribed_dofs.empty(), communicator);
-    for (VectorType *v : {&displacement,
-                          &velocity,
-                          &acceleration,
-                          &internal_force,
-                          &applied_force,
-                          &previous_applied_force,
-                          &previous_displacement,
-                          &coupling_force})
-      fe_zone->initialize_vector(*v);
-  }
-
-  template <int dim>
-  void
-  Simulator<dim>::apply_prescribed_motion(const double t)
-  {
-    const double dt = time_parameters.time_step;
-    prescribed_velocity.resize(prescribed_dofs.size());
-    for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
-      {
-        const auto &prescribed = prescribed_dofs[k];
-        auto &function = *problem_data.boundary_conditions[prescribed.boundary_id].function;
-        const auto value = [&](const double at) {
-          function.set_time(at);
-          return function.value(prescribed.location, prescribed.component);
-        };
-        const double before = value(t - dt), now = value(t), after = value(t + dt);
-        displacement.local_element(prescribed.local_index) = now;
-        prescribed_velocity[k] = (after - before) / (2. * dt);
-        velocity.local_element(prescribed.local_index)     = prescribed_velocity[k];
-        acceleration.local_element(prescribed.local_index) =
-          (after - 2. * now + before) / (dt * dt);
-      }
-  }
-
-  template <int dim>
-  void
-  Simulator<dim>::compute_accelerations(const double t)
-  {
-    {
-      TimerOutput::Scope scope(timer, "FE internal forces");
-      fe_zone->compute_internal_force(displacement, internal_force);
-    }
-    coupling_force = 0.;
-    if (coupling)
-      {
-        TimerOutput::Scope scope(timer, "coupling");
-        if (coupling_parameters.blending == Parameters::Blending::force)
-          for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
-            internal_force.local_element(i) *= coupling->nodal_alpha()[i];
-        if (coupling_parameters.blending == Parameters::Blending::energy)
-          coupling->add_slave_forces(coupling_force);
-      }
-    {
-      TimerOutput::Scope scope(timer, "FE external forces");
-      fe_zone->compute_external_force(problem_data, t, applied_force);
-    }
-    const VectorType &mass = fe_zone->lumped_mass();
-    // Prescribed DoFs keep their prescribed acceleration; save it across the free update.
-    std::vector<double> prescribed_acceleration;
-    for (const auto &prescribed : prescribed_dofs)
-      prescribed_acceleration.push_back(acceleration.local_element(prescribed.local_index));
-    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      acceleration.local_element(i) = (applied_force.local_element(i) -
-                                       internal_force.local_element(i) +
-                                       coupling_force.local_element(i)) /
-                                      mass.local_element(i);
-    // On prescribed DoFs the applied force includes the support reaction M a + K u - F_ext.
-    for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
-      {
-        const unsigned int i            = prescribed_dofs[k].local_index;
-        acceleration.local_element(i)  = prescribed_acceleration[k];
-        applied_force.local_element(i) = mass.local_element(i) * prescribed_acceleration[k] +
-                                         internal_force.local_element(i) -
-                                         coupling_force.local_element(i);
-      }
   }
 
   template <int dim>
   void
   Simulator<dim>::advance()
   {
-    const double dt = time_parameters.time_step;
-    if (fe_zone && any_work_done)
-      {
-        previous_displacement  = displacement;
-        previous_applied_force = applied_force;
-      }
-    if (fe_zone)
-      {
-        displacement.add(dt, velocity, 0.5 * dt * dt, acceleration);
-        velocity.add(0.5 * dt, acceleration);
-      }
-    if (pd_zone)
-      pd_zone->predict(dt);
-    time += dt;
-    ++step;
+    integrator->step();
+  }
 
-    // Predictor-corrector (eq. 58-69): slaves follow the predicted master field, trial
-    // accelerations and velocities without multipliers (with the fine-scale damping at the
-    // half-step velocities), then the multipliers restore d/dt g = 0.
-    if (fe_zone)
-      apply_prescribed_motion(time);
-    if (coupling)
-      {
-        TimerOutput::Scope scope(timer, "coupling");
-        coupling->set_slave_displacements(displacement);
-      }
-    if (pd_zone)
-      {
-        TimerOutput::Scope scope(timer, "PD forces");
-        pd_zone->compute_accelerations(time, problem_data);
-      }
-    if (coupling)
-      {
-        TimerOutput::Scope scope(timer, "coupling");
-        coupling->apply_damping(velocity);
-      }
-    if (fe_zone)
-      {
-        compute_accelerations(time);
-        velocity.add(0.5 * dt, acceleration);
-        // Prescribed DoFs take the prescribed velocity, not the integrated one.
-        for (unsigned int k = 0; k < prescribed_dofs.size(); ++k)
-          velocity.local_element(prescribed_dofs[k].local_index) = prescribed_velocity[k];
-      }
-    if (pd_zone)
-      pd_zone->correct(dt);
-    if (coupling)
-      {
-        TimerOutput::Scope scope(timer, "coupling");
-        coupling->enforce_constraint(velocity, acceleration);
-        coupling->set_slave_velocities(velocity, acceleration);
-      }
-
-    if (fe_zone && any_work_done)
-      {
-        // Trapezoidal work of loads and support reactions over the step.
-        previous_applied_force += applied_force;
-        previous_displacement.sadd(-1., displacement);
-        external_work += 0.5 * (previous_applied_force * previous_displacement);
-      }
+  template <int dim>
+  unsigned int
+  Simulator<dim>::step() const
+  {
+    return integrator->get_time().get_step_number();
   }
 
   template <int dim>
@@ -391,20 +250,22 @@ namespace PeriArlequin
   Simulator<dim>::record_energies()
   {
     TimerOutput::Scope scope(timer, "energies");
-    const double fe_kinetic = fe_zone ? fe_zone->kinetic_energy(velocity) : 0.;
-    const double fe_strain = fe_zone ? fe_zone->strain_energy(displacement, internal_force) : 0.;
+    const double fe_kinetic = fe_zone ? fe_zone->kinetic_energy() : 0.;
+    const double fe_strain  = fe_zone ? fe_zone->strain_energy() : 0.;
     const double pd_kinetic = pd_zone ? pd_zone->kinetic_energy() : 0.;
     const double pd_strain  = pd_zone ? pd_zone->strain_energy() : 0.;
-    const double work   = external_work + (pd_zone ? pd_zone->external_work() : 0.);
+    double       work       = 0;
+    for (const IntegratedZone *zone : zones)
+      work += zone->external_work();
     const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
     const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
     check_finite(kinetic + strain);
     const auto pure_pd =
       pd_zone ? pd_zone->energies_in(monitor_region) : std::pair<double, double>();
-    const auto residuals = coupling ? coupling->constraint_residuals(displacement, velocity) :
-                                      std::pair<double, double>();
-    energy_history->add_row({static_cast<double>(step),
-                             time,
+    const auto residuals =
+      coupling ? coupling->constraint_residuals() : std::pair<double, double>();
+    energy_history->add_row({static_cast<double>(step()),
+                             get_time(),
                              kinetic,
                              strain,
                              work,
@@ -428,7 +289,7 @@ namespace PeriArlequin
     if (std::isfinite(energy))
       return;
     std::ostringstream message;
-    message << "The solution is not finite at step " << step << " (t = " << time
+    message << "The solution is not finite at step " << step() << " (t = " << get_time()
             << " s): an unstable time step, or initial data, loads or boundary values that "
                "evaluate to NaN or infinity.";
     AssertThrow(false, ExcMessage(message.str()));
@@ -438,8 +299,10 @@ namespace PeriArlequin
   double
   Simulator<dim>::kinetic_energy() const
   {
-    return (fe_zone ? fe_zone->kinetic_energy(velocity) : 0.) +
-           (pd_zone ? pd_zone->kinetic_energy() : 0.);
+    double sum = 0;
+    for (const IntegratedZone *zone : zones)
+      sum += zone->kinetic_energy();
+    return sum;
   }
 
   template <int dim>
@@ -448,9 +311,10 @@ namespace PeriArlequin
   {
     TimerOutput::Scope scope(timer, "output");
     if (fe_output)
-      fe_output->write(step, time, displacement, velocity);
+      fe_output->write(step(), get_time(), get_displacement(), get_velocity());
     if (pd_zone)
-      pd_zone->write_output(step, time, output_parameters.directory, output_parameters.base_name);
+      pd_zone->write_output(
+        step(), get_time(), output_parameters.directory, output_parameters.base_name);
     if (!sample_segment.empty())
       write_line_samples();
   }
@@ -484,7 +348,7 @@ namespace PeriArlequin
         for (unsigned int k = 0; k < dofs.size(); ++k)
           if (distance(points[k]) <= tolerance)
             nodes[std::vector<double>(points[k].begin_raw(), points[k].end_raw())]
-                 [components[k]] = displacement.local_element(dofs[k]);
+                 [components[k]] = get_displacement().local_element(dofs[k]);
         for (const auto &[x, u] : nodes)
           {
             Point<dim> p;
@@ -516,7 +380,7 @@ namespace PeriArlequin
     });
     std::ostringstream name;
     name << output_parameters.directory << "/" << output_parameters.base_name << "_line_"
-         << std::setw(6) << std::setfill('0') << step << ".csv";
+         << std::setw(6) << std::setfill('0') << step() << ".csv";
     std::ofstream out(name.str());
     const char *axes[] = {"x", "y", "z"};
     out << "zone";
@@ -536,7 +400,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  Simulator<dim>::report_progress(const unsigned int n_steps, const bool force)
+  Simulator<dim>::report_progress(const bool force)
   {
     if (output_parameters.progress_interval <= 0)
       return;
@@ -548,9 +412,10 @@ namespace PeriArlequin
     last_progress_time = wall;
     // Energies may not be recorded: make sure the state is finite when progress is shown.
     check_finite(kinetic_energy());
-    const double remaining = step > 0 ? wall * (n_steps - step) / step : 0.;
-    pcout << "  step " << step << "/" << n_steps << ", t = " << std::setprecision(4)
-          << std::scientific << time << " s, wall " << std::fixed << std::setprecision(1)
+    const unsigned int n = step();
+    const double remaining = n > 0 ? wall * (n_steps - n) / n : 0.;
+    pcout << "  step " << n << "/" << n_steps << ", t = " << std::setprecision(4)
+          << std::scientific << get_time() << " s, wall " << std::fixed << std::setprecision(1)
           << wall << " s, about " << remaining << " s to go" << std::defaultfloat
           << std::setprecision(6) << std::endl;
   }
@@ -561,10 +426,8 @@ namespace PeriArlequin
   {
     if (!setup_done)
       setup();
-    const auto n_steps = static_cast<unsigned int>(
-      std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
     const auto due = [&](const unsigned int interval) {
-      return interval > 0 && (step % interval == 0 || step == n_steps);
+      return interval > 0 && (step() % interval == 0 || step() == n_steps);
     };
 
     if (due(output_parameters.energy_interval))
@@ -573,14 +436,14 @@ namespace PeriArlequin
       write_output();
 
     wall_clock.restart();
-    while (step < n_steps)
+    while (step() < n_steps)
       {
         advance();
         if (due(output_parameters.energy_interval))
           record_energies();
         if (due(output_parameters.output_interval))
           write_output();
-        report_progress(n_steps, step == n_steps);
+        report_progress(step() == n_steps);
       }
     const double loop_time = wall_clock.wall_time();
     check_finite(kinetic_energy());
@@ -594,6 +457,13 @@ namespace PeriArlequin
     pcout << std::endl;
     if (output_parameters.print_timing)
       timer.print_wall_time_statistics(communicator);
+  }
+
+  template <int dim>
+  FEZone<dim> &
+  Simulator<dim>::get_fe_zone()
+  {
+    return *fe_zone;
   }
 
   template <int dim>
@@ -642,28 +512,28 @@ namespace PeriArlequin
   const typename Simulator<dim>::VectorType &
   Simulator<dim>::get_displacement() const
   {
-    return displacement;
+    return fe_zone->get_state().displacement;
   }
 
   template <int dim>
   const typename Simulator<dim>::VectorType &
   Simulator<dim>::get_velocity() const
   {
-    return velocity;
+    return fe_zone->get_state().velocity;
   }
 
   template <int dim>
   const typename Simulator<dim>::VectorType &
   Simulator<dim>::get_acceleration() const
   {
-    return acceleration;
+    return fe_zone->get_state().acceleration;
   }
 
   template <int dim>
   double
   Simulator<dim>::get_time() const
   {
-    return time;
+    return integrator->get_time().get_current_time();
   }
 
   template <int dim>

@@ -15,6 +15,7 @@
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
 #include <periarlequin/pd/pd_zone.h>
+#include <periarlequin/time/predictor_corrector.h>
 
 #include <memory>
 
@@ -26,9 +27,10 @@ namespace PeriArlequin
    * Runs one case described by a parameter file: builds the mesh and the zones (FE where no
    * PD region covers a cell's centre, PD particles in the PD region), checks the time step
    * against the stable steps of both, integrates in time with velocity Verlet and writes
-   * fields, energies and progress. With Coupling/Method set, the zones overlap and are glued
-   * by ArlequinCoupling inside the predictor-corrector step of eq. 58-69; otherwise a case is
-   * pure FE or pure PD, or has independent FE and PD bodies.
+   * fields, energies and progress. The zones own their state; PredictorCorrector steps them.
+   * With Coupling/Method set, the zones overlap and are glued by ArlequinCoupling inside the
+   * predictor-corrector step of eq. 58-69; otherwise a case is pure FE or pure PD, or has
+   * independent FE and PD bodies.
    */
   template <int dim>
   class Simulator
@@ -51,7 +53,7 @@ namespace PeriArlequin
     void
     run();
 
-    /** One step of velocity Verlet (predictor-corrector when coupled) from the current state. */
+    /** One step of the time integrator from the current state. */
     void
     advance();
 
@@ -63,6 +65,8 @@ namespace PeriArlequin
     get_blending_field() const;
 
     /** The FE zone; only valid if the case has FE cells. */
+    FEZone<dim> &
+    get_fe_zone();
     const FEZone<dim> &
     get_fe_zone() const;
     /** The PD zone, or nullptr if the case has none. */
@@ -88,16 +92,6 @@ namespace PeriArlequin
   private:
     void
     setup_fe_zone();
-    /** Prescribed displacement and its central-difference velocity and acceleration. */
-    void
-    apply_prescribed_motion(const double time);
-    /**
-     * Accelerations M^-1 (F_ext - K u + F_c) on free DoFs and the applied force vector P;
-     * F_c = N^T f of the PD slaves under energy blending, and K u is weighted per node under
-     * force blending.
-     */
-    void
-    compute_accelerations(const double time);
     void
     record_energies();
     /** Throw a clear error if the state (measured by an energy) is no longer finite. */
@@ -112,7 +106,10 @@ namespace PeriArlequin
     void
     write_line_samples();
     void
-    report_progress(const unsigned int n_steps, const bool force);
+    report_progress(const bool force);
+    /** The current step number. */
+    unsigned int
+    step() const;
 
     const MPI_Comm      communicator;
     ConditionalOStream  pcout;
@@ -138,19 +135,12 @@ namespace PeriArlequin
     std::unique_ptr<ArlequinCoupling<dim>>    coupling;
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<EnergyHistory>            energy_history;
-    std::vector<typename FEZone<dim>::PrescribedDoF> prescribed_dofs;
-    /** Their velocities at the current time, computed once per step. */
-    std::vector<double>                              prescribed_velocity;
-    bool                                             any_work_done = false;
+    std::unique_ptr<PredictorCorrector<dim>>  integrator;
+    /** The zones the case has, PD before FE (the order the integrator needs). */
+    std::vector<IntegratedZone *>             zones;
 
-    VectorType   displacement, velocity, acceleration;
-    VectorType   internal_force, applied_force, previous_applied_force, previous_displacement;
-    VectorType   coupling_force;
-    double       time               = 0.;
-    unsigned int step               = 0;
+    unsigned int n_steps            = 0;
     double       stable_time_step   = 0.;
-    /** Work of the loads and support reactions on the FE zone. */
-    double       external_work      = 0.;
     bool         setup_done         = false;
     Timer        wall_clock;
     double       last_progress_time = 0.;

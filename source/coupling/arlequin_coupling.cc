@@ -21,7 +21,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::setup(const std::vector<unsigned int> &fixed_dofs, const double dt)
+  ArlequinCoupling<dim>::setup(const double dt)
   {
     using Parameters::CouplingMethod;
     time_step              = dt;
@@ -106,8 +106,8 @@ namespace PeriArlequin
     const auto &mass = fe_zone.lumped_mass();
     for (unsigned int i = 0; i < inverse_mass.locally_owned_size(); ++i)
       inverse_mass.local_element(i) = 1. / mass.local_element(i);
-    for (const unsigned int i : fixed_dofs)
-      inverse_mass.local_element(i) = 0.;
+    for (const auto &fixed : fe_zone.get_prescribed_dofs())
+      inverse_mass.local_element(fixed.local_index) = 0.;
     for (const auto &slave : fe_slaves)
       inverse_mass.local_element(slave.dof) = 0.;
 
@@ -175,13 +175,11 @@ namespace PeriArlequin
                                  "diagonal solver needs non-negative shape functions (FE degree "
                                  "1); use 'Coupling/Multiplier solver = cg'."));
       }
-  }
 
-  template <int dim>
-  const std::vector<double> &
-  ArlequinCoupling<dim>::nodal_alpha() const
-  {
-    return alpha_at_dofs;
+    if (parameters.blending == Parameters::Blending::force)
+      fe_zone.set_nodal_force_weights(alpha_at_dofs);
+    if (parameters.blending == Parameters::Blending::energy)
+      fe_zone.set_interface_force([this](VectorType &force) { add_slave_forces(force); });
   }
 
   template <int dim>
@@ -276,8 +274,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::set_slave_displacements(VectorType &displacement)
+  ArlequinCoupling<dim>::set_slave_displacements()
   {
+    VectorType &displacement = fe_zone.get_state().displacement;
     if (parameters.method == Parameters::CouplingMethod::bad)
       {
         pd_zone.update_ghost_displacements();
@@ -311,10 +310,11 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::apply_damping(const VectorType &velocity)
+  ArlequinCoupling<dim>::apply_damping()
   {
     if (!parameters.damping)
       return;
+    const VectorType &velocity = fe_zone.get_state().velocity;
     velocity.update_ghost_values();
     for (unsigned int r = 0; r < overlap_rows.size(); ++r)
       {
@@ -326,10 +326,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::enforce_constraint(VectorType &velocity, VectorType &acceleration)
+  ArlequinCoupling<dim>::enforce_constraint()
   {
     if (parameters.method == Parameters::CouplingMethod::bad)
       return;
+    VectorType &velocity     = fe_zone.get_state().velocity;
+    VectorType &acceleration = fe_zone.get_state().acceleration;
     velocity.update_ghost_values();
     for (unsigned int r = 0; r < overlap_rows.size(); ++r)
       {
@@ -395,8 +397,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::set_slave_velocities(VectorType &velocity, VectorType &acceleration)
+  ArlequinCoupling<dim>::set_slave_velocities()
   {
+    VectorType &velocity     = fe_zone.get_state().velocity;
+    VectorType &acceleration = fe_zone.get_state().acceleration;
     if (parameters.method == Parameters::CouplingMethod::bad)
       {
         pd_motion_buffer.resize(2 * dim * pd_zone.reference_position.size());
@@ -431,9 +435,10 @@ namespace PeriArlequin
 
   template <int dim>
   std::pair<double, double>
-  ArlequinCoupling<dim>::constraint_residuals(const VectorType &displacement,
-                                              const VectorType &velocity)
+  ArlequinCoupling<dim>::constraint_residuals()
   {
+    const VectorType &displacement = fe_zone.get_state().displacement;
+    const VectorType &velocity     = fe_zone.get_state().velocity;
     if (parameters.method == Parameters::CouplingMethod::bad)
       return {0., 0.};
     std::pair<double, double> norms;

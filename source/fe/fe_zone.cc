@@ -369,23 +369,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
-  FEZone<dim>::kinetic_energy(const VectorType &velocity) const
-  {
-    double local = 0;
-    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      local += mass.local_element(i) * velocity.local_element(i) * velocity.local_element(i);
-    return 0.5 * Utilities::MPI::sum(local, communicator);
-  }
-
-  template <int dim>
-  double
-  FEZone<dim>::strain_energy(const VectorType &displacement, const VectorType &internal_force) const
-  {
-    return 0.5 * (displacement * internal_force);
-  }
-
-  template <int dim>
   const DoFHandler<dim> &
   FEZone<dim>::get_dof_handler() const
   {

@@ -277,7 +277,8 @@ namespace PeriArlequin
   void
   PDZone<dim>::setup(const ProblemData<dim> &data, const double dt)
   {
-    time_step = dt;
+    problem_data = &data;
+    time_step    = dt;
     generate_particles();
     check_horizon_covered();
     compute_blending_weights();
@@ -324,7 +325,13 @@ namespace PeriArlequin
     work        = 0;
     tracks_work = Utilities::MPI::logical_or(data.has_body_force || !prescribed_particles.empty(),
                                              communicator);
-    compute_accelerations(0., data);
+  }
+
+  template <int dim>
+  std::string
+  PDZone<dim>::name() const
+  {
+    return "PD";
   }
 
   template <int dim>
@@ -543,7 +550,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::apply_prescribed_motion(const double time)
+  PDZone<dim>::impose_prescribed_motion(const double time)
   {
     const double dt = time_step;
     Vector<double> before(dim), now(dim), after(dim);
@@ -602,15 +609,13 @@ namespace PeriArlequin
         displacement[i] += dt * velocity[i] + (0.5 * dt * dt) * acceleration[i];
         velocity[i] += (0.5 * dt) * acceleration[i];
       }
-    step_open = true;
   }
 
   template <int dim>
   void
-  PDZone<dim>::compute_accelerations(const double time, const ProblemData<dim> &data)
+  PDZone<dim>::compute_accelerations(const double time)
   {
-    // Prescribed particles take their prescribed motion, overriding the predictor.
-    apply_prescribed_motion(time);
+    const ProblemData<dim> &data = *problem_data;
     update_ghost_displacements();
     if (parameters.fracture)
       break_bonds();
@@ -654,17 +659,20 @@ namespace PeriArlequin
               applied_force[i][d] = particle_mass(i) * acceleration[i][d] - blended_force(i)[d];
             }
       }
+  }
 
-    if (tracks_work && step_open)
-      {
-        // Trapezoidal work of the applied forces over the step.
-        double increment = 0;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          increment += (previous_applied_force[i] + applied_force[i]) *
-                       (displacement[i] - previous_displacement[i]);
-        work += 0.5 * increment;
-      }
-    step_open = false;
+  template <int dim>
+  void
+  PDZone<dim>::account_work()
+  {
+    if (!tracks_work)
+      return;
+    // Trapezoidal work of the applied forces over the step.
+    double increment = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      increment += (previous_applied_force[i] + applied_force[i]) *
+                   (displacement[i] - previous_displacement[i]);
+    work += 0.5 * increment;
   }
 
   template <int dim>

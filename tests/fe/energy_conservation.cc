@@ -57,8 +57,8 @@ discrete_energy(const PeriArlequin::Simulator<dim> &simulator)
     a_M_a += force.local_element(i) * force.local_element(i) / mass.local_element(i);
   a_M_a = Utilities::MPI::sum(a_M_a, MPI_COMM_WORLD);
   const double dt = simulator.get_time_step();
-  return fe_zone.kinetic_energy(simulator.get_velocity()) +
-         fe_zone.strain_energy(simulator.get_displacement(), force) - dt * dt / 8 * a_M_a;
+  return fe_zone.kinetic_energy() + 0.5 * (simulator.get_displacement() * force) -
+         dt * dt / 8 * a_M_a;
 }
 
 template <int dim>

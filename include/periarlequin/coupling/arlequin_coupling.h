@@ -47,43 +47,37 @@ namespace PeriArlequin
                      PDZone<dim>                &pd_zone);
 
     /**
-     * Interpolation rows, multiplier rows, inverse masses (0 on the @p fixed_dofs, local
-     * indices of prescribed FE DoFs), damping coefficients; checks that the overlap holds
-     * PD nodes and FE DoFs and that the damping is stable at @p time_step.
+     * Interpolation rows, multiplier rows, inverse masses (0 on the FE zone's prescribed
+     * DoFs: call after FEZone::initialize_state()), damping coefficients; checks that the
+     * overlap holds PD nodes and FE DoFs and that the damping is stable at @p time_step.
+     * Sets the FE zone's force hooks: nodal weights alpha_I (force blending) or the slaves'
+     * forces N^T f (energy blending).
      */
     void
-    setup(const std::vector<unsigned int> &fixed_dofs, const double time_step);
-
-    /** alpha at the owned FE DoFs' support points (the nodal weights of force blending). */
-    const std::vector<double> &
-    nodal_alpha() const;
+    setup(const double time_step);
 
     /** Slaves follow the master field: bad coupling's FE DoFs, then d = N u on PD slaves. */
     void
-    set_slave_displacements(VectorType &displacement);
-
-    /** @p force += N^T f on the slaves' blended PD forces (energy blending). */
-    void
-    add_slave_forces(VectorType &force);
+    set_slave_displacements();
 
     /** b_I -= C_I (w_I - (N v)_I) on the PD nodes of the overlap (half-step velocities). */
     void
-    apply_damping(const VectorType &velocity);
+    apply_damping();
 
     /**
      * Solve for the multipliers from the trial velocities and correct velocities and
      * accelerations of both zones.
      */
     void
-    enforce_constraint(VectorType &velocity, VectorType &acceleration);
+    enforce_constraint();
 
     /** Slaves' velocities and accelerations from their masters. */
     void
-    set_slave_velocities(VectorType &velocity, VectorType &acceleration);
+    set_slave_velocities();
 
     /** |g| = |H^T (N u - d)| [m] and |g_dot| = |H^T (N v - w)| [m/s] (l2 over all rows). */
     std::pair<double, double>
-    constraint_residuals(const VectorType &displacement, const VectorType &velocity);
+    constraint_residuals();
 
     /** Number of multipliers (over all ranks and components). */
     types::global_dof_index
@@ -97,6 +91,10 @@ namespace PeriArlequin
 
   private:
     using Values = std::vector<Tensor<1, dim>>;
+
+    /** @p force += N^T f on the slaves' blended PD forces (energy blending). */
+    void
+    add_slave_forces(VectorType &force);
 
     /** (N x)_I at the k-th particle with an interpolation row; x needs ghost values. */
     Tensor<1, dim>

@@ -13,6 +13,7 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
+#include <periarlequin/time/integrated_zone.h>
 
 #include <functional>
 #include <vector>
@@ -25,11 +26,13 @@ namespace PeriArlequin
    * The classical (finite-element) zone: vector FE_Q displacements on the cells where the
    * continuum lives and FE_Nothing elsewhere (an hp DoFHandler, so a pure PD region carries no
    * FE unknowns), a lumped mass and the blended stiffness K_alpha = int alpha B^T D B, assembled
-   * once because the material is linear. Everything that the explicit integrators need from
-   * the continuum is here: K_alpha u, external forces, energies and the stable step.
+   * once because the material is linear. The zone owns the FE state (displacement, velocity,
+   * acceleration) and steps it with velocity Verlet, split as IntegratedZone says so that the
+   * coupling can act between the parts; boundary displacements are imposed here, and the work
+   * of loads and support reactions is accounted here.
    */
   template <int dim>
-  class FEZone
+  class FEZone : public IntegratedZone
   {
   public:
     using VectorType = LinearAlgebra::distributed::Vector<double>;
@@ -43,6 +46,12 @@ namespace PeriArlequin
       unsigned int component;
       unsigned int boundary_id;
       Point<dim>   location;
+    };
+
+    /** Nodal displacement, velocity and acceleration (owned and ghost DoFs). */
+    struct State
+    {
+      VectorType displacement, velocity, acceleration;
     };
 
     FEZone(const parallel::distributed::Triangulation<dim> &triangulation,
@@ -63,6 +72,54 @@ namespace PeriArlequin
     setup(const WeightFunction &mass_weight,
           const WeightFunction &stiffness_weight,
           const CellPredicate  &in_fe_zone);
+
+    /**
+     * Initial displacement and velocity from the problem's initial data at t = 0, and the
+     * prescribed boundary DoFs (their motion by central differences over @p time_step).
+     * @p data must outlive the zone. Call after setup().
+     */
+    void
+    initialize_state(const ProblemData<dim> &data, const double time_step);
+
+    std::string
+    name() const override;
+    void
+    predict(const double dt) override;
+    void
+    impose_prescribed_motion(const double time) override;
+    /**
+     * a = M^-1 (F_ext - F_int + F_interface) with F_int = K_alpha u, weighted per node when
+     * nodal force weights are set (force blending), and F_interface from the interface-force
+     * hook (energy blending: the PD slaves' forces N^T f).
+     */
+    void
+    compute_accelerations(const double time) override;
+    void
+    correct(const double dt) override;
+    void
+    account_work() override;
+    double
+    kinetic_energy() const override;
+    /** 1/2 u . F_int of the last computed forces. */
+    double
+    strain_energy() const override;
+    double
+    external_work() const override;
+
+    State &
+    get_state();
+    const State &
+    get_state() const;
+    /** The locally owned DoFs whose displacement is prescribed. */
+    const std::vector<PrescribedDoF> &
+    get_prescribed_dofs() const;
+
+    /** Force blending: F_int,I is multiplied by @p weights[I] (owned DoFs, local order). */
+    void
+    set_nodal_force_weights(const std::vector<double> &weights);
+    /** A force added to the FE nodes at every force evaluation (it adds into the vector). */
+    void
+    set_interface_force(const std::function<void(VectorType &)> &add_force);
 
     /** The locally owned DoFs (local indices), their support points and components. */
     void
@@ -102,14 +159,6 @@ namespace PeriArlequin
     double
     estimate_stable_time_step(const unsigned int max_iterations) const;
 
-    /** Kinetic energy 1/2 v^T M v. */
-    double
-    kinetic_energy(const VectorType &velocity) const;
-
-    /** Strain energy 1/2 u^T K_alpha u, given the internal force K_alpha u. */
-    double
-    strain_energy(const VectorType &displacement, const VectorType &internal_force) const;
-
     const DoFHandler<dim> &
     get_dof_handler() const;
     const VectorType &
@@ -136,6 +185,23 @@ namespace PeriArlequin
     TrilinosWrappers::SparseMatrix                   stiffness_matrix;
     VectorType                                       mass;
     WeightFunction                                   mass_weight;
+
+    const ProblemData<dim>                          *problem_data = nullptr;
+    double                                           time_step    = 0;
+    State                                            state;
+    VectorType                                       internal_force, applied_force;
+    VectorType                                       previous_applied_force;
+    VectorType                                       previous_displacement;
+    VectorType                                       interface_force;
+    std::vector<PrescribedDoF>                       prescribed;
+    /** Velocities and accelerations of the prescribed DoFs at the current time. */
+    std::vector<double>                              prescribed_velocity;
+    std::vector<double>                              prescribed_acceleration;
+    std::vector<double>                              nodal_force_weights;
+    std::function<void(VectorType &)>                add_interface_force;
+    /** Whether any load or support does work (otherwise the work is not accounted). */
+    bool                                             tracks_work = false;
+    double                                           work        = 0;
   };
 } // namespace PeriArlequin
 

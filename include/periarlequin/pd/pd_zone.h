@@ -14,6 +14,7 @@
 #include <periarlequin/io/pvd_series.h>
 #include <periarlequin/pd/bond_families.h>
 #include <periarlequin/pd/material_model.h>
+#include <periarlequin/time/integrated_zone.h>
 
 #include <array>
 #include <functional>
@@ -74,11 +75,11 @@ namespace PeriArlequin
    * number, owned particles first, then ghosts; particle properties only carry data across
    * ranks and to output.
    *
-   * Time integration is velocity Verlet, split so that a coupled integrator can interleave
-   * it with the FE zone: predict(), compute_accelerations(), correct().
+   * Time integration is velocity Verlet, split as IntegratedZone says so that a coupled
+   * integrator can interleave it with the FE zone.
    */
   template <int dim>
-  class PDZone
+  class PDZone : public IntegratedZone
   {
   public:
     /** Which lattice sites hold a particle. */
@@ -120,19 +121,31 @@ namespace PeriArlequin
     bool
     contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
-    /** Particles, ghosts, bonds, pre-cracks, model, initial state. */
+    /**
+     * Particles, ghosts, bonds, pre-cracks, model, initial state (without accelerations:
+     * the integrator computes them once the coupling has set the slaves). @p data must
+     * outlive the zone.
+     */
     void
     setup(const ProblemData<dim> &data, const double time_step);
 
+    std::string
+    name() const override;
     /** u += dt v + dt^2/2 a,  v += dt/2 a (owned particles). */
     void
-    predict(const double dt);
-    /** Bond breaking, forces and accelerations at time @p time, prescribed particles. */
+    predict(const double dt) override;
+    /** Prescribed particles take their motion at @p time. */
     void
-    compute_accelerations(const double time, const ProblemData<dim> &data);
+    impose_prescribed_motion(const double time) override;
+    /** Bond breaking, forces and accelerations at time @p time. */
+    void
+    compute_accelerations(const double time) override;
     /** v += dt/2 a, then the prescribed velocities of this step. */
     void
-    correct(const double dt);
+    correct(const double dt) override;
+    /** Work of body forces and of the prescribed particles' reactions over the step. */
+    void
+    account_work() override;
 
     /**
      * Internal force density of the current displacement (ghost exchange, model scalars,
@@ -146,15 +159,15 @@ namespace PeriArlequin
     estimate_stable_time_step(const unsigned int max_iterations);
 
     double
-    kinetic_energy() const;
+    kinetic_energy() const override;
     double
-    strain_energy() const;
+    strain_energy() const override;
     /** Kinetic and strain energy of the particles in @p region [J]. */
     std::pair<double, double>
     energies_in(const Region<dim> &region) const;
     /** Work of body forces and of the prescribed particles' reactions since the start. */
     double
-    external_work() const;
+    external_work() const override;
     types::particle_index
     n_global_particles() const;
     /** Family sizes summed over all particles (each bond counted from both ends). */
@@ -225,8 +238,6 @@ namespace PeriArlequin
     void
     break_bonds();
     void
-    apply_prescribed_motion(const double time);
-    void
     restore_prescribed_velocities();
 
     /** Lattice index of a point (per direction) and the particle id of a lattice site. */
@@ -246,6 +257,7 @@ namespace PeriArlequin
     WeightFunction                             blending_weight;
     bool                                       energy_blending     = false;
     double                                     minimum_mass_weight = 1.;
+    const ProblemData<dim>                    *problem_data        = nullptr;
     /** Per particle: strain-energy weight inside the sums (owned and ghost), nodal force
      * weight and mass weight (owned). */
     std::vector<double>                        state_weight, force_weight, mass_weight;
@@ -268,7 +280,6 @@ namespace PeriArlequin
     std::vector<Tensor<1, dim>>     applied_force, previous_applied_force, previous_displacement;
     double                          work        = 0;
     bool                            tracks_work = false;
-    bool                            step_open   = false;
     std::vector<double>             exchange_buffer;
     std::unique_ptr<PVDSeries>      output_series;
   };

@@ -1,0 +1,61 @@
+#ifndef periarlequin_time_integrated_zone_h
+#define periarlequin_time_integrated_zone_h
+
+#include <string>
+
+namespace PeriArlequin
+{
+  /**
+   * What the explicit integrator needs of a zone (the FE zone, the PD zone): velocity Verlet
+   * split into the parts between which the Arlequin coupling acts (eq. 58-61). A zone owns
+   * its state (displacement, velocity, acceleration of its nodes) and its loads.
+   */
+  class IntegratedZone
+  {
+  public:
+    virtual ~IntegratedZone() = default;
+
+    /** "FE" or "PD": the zone's name in timings. */
+    virtual std::string
+    name() const = 0;
+
+    /** Eq. 58-59: x += dt v + dt^2/2 a, then the half-step velocity v += dt/2 a. */
+    virtual void
+    predict(const double dt) = 0;
+
+    /**
+     * Prescribed nodes take the displacement, velocity and acceleration of their prescribed
+     * motion at @p time (central differences in time over the step).
+     */
+    virtual void
+    impose_prescribed_motion(const double time) = 0;
+
+    /**
+     * Eq. 60: trial accelerations M^-1 (F_ext - F_int) at @p time, without multipliers;
+     * prescribed nodes keep their prescribed acceleration, and their applied force takes the
+     * support reaction.
+     */
+    virtual void
+    compute_accelerations(const double time) = 0;
+
+    /** Eq. 61: trial velocities v += dt/2 a; prescribed nodes keep their velocity. */
+    virtual void
+    correct(const double dt) = 0;
+
+    /** Work of loads and support reactions over the step just taken (trapezoidal rule). */
+    virtual void
+    account_work() = 0;
+
+    /** Kinetic energy of the weighted masses [J]. */
+    virtual double
+    kinetic_energy() const = 0;
+    /** Blended strain energy of the last computed forces [J]. */
+    virtual double
+    strain_energy() const = 0;
+    /** Work of loads and support reactions since the start [J]. */
+    virtual double
+    external_work() const = 0;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,97 @@
+#ifndef periarlequin_time_predictor_corrector_h
+#define periarlequin_time_predictor_corrector_h
+
+#include <deal.II/base/discrete_time.h>
+#include <deal.II/base/timer.h>
+
+#include <periarlequin/coupling/arlequin_coupling.h>
+#include <periarlequin/time/integrated_zone.h>
+
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * The explicit time loop of the paper (section 4.3, eq. 58-69, with the fine-scale damping of
+   * eq. 76-80): velocity Verlet for every zone, with the predictor-corrector of the Arlequin
+   * coupling between its parts when the zones are coupled. Each step is the sequence of named
+   * parts below; a zone or a coupling takes part only if the case has it. Without a coupling
+   * the step is plain velocity Verlet of each zone.
+   */
+  template <int dim>
+  class PredictorCorrector
+  {
+  public:
+    /**
+     * Integrate @p zones (in the order given: the PD zone before the FE zone, whose
+     * interface forces are the slaves' PD forces of the same step) from t = 0 to
+     * @p n_steps x @p time_step; @p coupling may be nullptr. Sections are timed in @p timer.
+     */
+    PredictorCorrector(const std::vector<IntegratedZone *> &zones,
+                       ArlequinCoupling<dim>               *coupling,
+                       const double                         time_step,
+                       const unsigned int                   n_steps,
+                       TimerOutput                         &timer);
+
+    /** Accelerations at t = 0 (eq. 60), with prescribed nodes and slaves on their masters. */
+    void
+    initialize();
+
+    /** One step from t_n to t_n+1. */
+    void
+    step();
+
+    /** Current time and step number. */
+    const DiscreteTime &
+    get_time() const;
+
+  private:
+    /** Eq. 58-59: displacements and half-step velocities of every node. */
+    void
+    predict(const double dt);
+    /** Prescribed nodes of every zone take their motion at the new time. */
+    void
+    impose_prescribed_motion();
+    /**
+     * The coupling's slaves follow their masters' predicted displacements: PD slaves
+     * d = N u (the alpha = 1 layer that completes the families), and under the bad coupling
+     * FE nodes of the PD half of the overlap follow the PD lattice.
+     */
+    void
+    slaves_follow_masters();
+    /** Eq. 60: trial accelerations without multipliers (PD first: see the constructor). */
+    void
+    compute_trial_accelerations();
+    /**
+     * Eq. 76-79: damping -M_p C_I (w - N v)_I of the fine-scale velocity on the overlap's PD
+     * nodes, with the half-step velocities of both zones.
+     */
+    void
+    damp_fine_scale();
+    /** Eq. 61: trial velocities v* = v^(n+1/2) + dt/2 a*. */
+    void
+    compute_trial_velocities(const double dt);
+    /**
+     * Eq. 62-69: multipliers from d/dt g = 0 at t_n+1 (A lambda = H^T (N v* - w*)), velocity
+     * and acceleration corrections of both zones, then the slaves' velocities.
+     */
+    void
+    solve_multipliers_and_correct();
+    /** Work of loads and support reactions over the step, zone by zone. */
+    void
+    account_work();
+    /** Time @p what in the section "<zone> forces" or "coupling". */
+    template <typename Action>
+    void
+    timed(const std::string &section, const Action &what);
+
+    std::vector<IntegratedZone *> zones;
+    ArlequinCoupling<dim>        *coupling;
+    DiscreteTime                  time;
+    TimerOutput                  &timer;
+  };
+} // namespace PeriArlequin
+
+#endif

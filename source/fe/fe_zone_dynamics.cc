@@ -1,0 +1,210 @@
+// FEZone: the state and its velocity-Verlet parts (eq. 58-61), prescribed boundary motion and
+// the work of loads and support reactions. Assembly and operators are in fe_zone.cc.
+#include <periarlequin/fe/fe_zone.h>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  FEZone<dim>::initialize_state(const ProblemData<dim> &data, const double dt)
+  {
+    problem_data = &data;
+    time_step    = dt;
+    for (VectorType *v : {&state.displacement,
+                          &state.velocity,
+                          &state.acceleration,
+                          &internal_force,
+                          &applied_force,
+                          &previous_applied_force,
+                          &previous_displacement,
+                          &interface_force})
+      initialize_vector(*v);
+    prescribed  = prescribed_dofs(data);
+    tracks_work = data.has_body_force || data.has_tractions() ||
+                  Utilities::MPI::logical_or(!prescribed.empty(), communicator);
+    work        = 0;
+
+    data.initial_displacement.set_time(0.);
+    data.initial_velocity.set_time(0.);
+    interpolate(data.initial_displacement, state.displacement);
+    interpolate(data.initial_velocity, state.velocity);
+  }
+
+  template <int dim>
+  std::string
+  FEZone<dim>::name() const
+  {
+    return "FE";
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::predict(const double dt)
+  {
+    if (tracks_work)
+      {
+        previous_displacement  = state.displacement;
+        previous_applied_force = applied_force;
+      }
+    state.displacement.add(dt, state.velocity, 0.5 * dt * dt, state.acceleration);
+    state.velocity.add(0.5 * dt, state.acceleration);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::impose_prescribed_motion(const double t)
+  {
+    const double dt = time_step;
+    prescribed_velocity.resize(prescribed.size());
+    prescribed_acceleration.resize(prescribed.size());
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        const auto &dof      = prescribed[k];
+        auto       &function = *problem_data->boundary_conditions[dof.boundary_id].function;
+        const auto  value    = [&](const double at) {
+          function.set_time(at);
+          return function.value(dof.location, dof.component);
+        };
+        const double before = value(t - dt), now = value(t), after = value(t + dt);
+        prescribed_velocity[k]                         = (after - before) / (2. * dt);
+        prescribed_acceleration[k]                     = (after - 2. * now + before) / (dt * dt);
+        state.displacement.local_element(dof.local_index) = now;
+        state.velocity.local_element(dof.local_index)     = prescribed_velocity[k];
+        state.acceleration.local_element(dof.local_index) = prescribed_acceleration[k];
+      }
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::compute_accelerations(const double t)
+  {
+    compute_internal_force(state.displacement, internal_force);
+    if (!nodal_force_weights.empty())
+      for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
+        internal_force.local_element(i) *= nodal_force_weights[i];
+    interface_force = 0.;
+    if (add_interface_force)
+      add_interface_force(interface_force);
+    compute_external_force(*problem_data, t, applied_force);
+
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      state.acceleration.local_element(i) =
+        (applied_force.local_element(i) - internal_force.local_element(i) +
+         interface_force.local_element(i)) /
+        mass.local_element(i);
+    // Prescribed DoFs keep their prescribed acceleration; their applied force takes the
+    // support reaction M a + F_int - F_interface.
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        const unsigned int i                 = prescribed[k].local_index;
+        state.acceleration.local_element(i)  = prescribed_acceleration[k];
+        applied_force.local_element(i) = mass.local_element(i) * prescribed_acceleration[k] +
+                                         internal_force.local_element(i) -
+                                         interface_force.local_element(i);
+      }
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::correct(const double dt)
+  {
+    state.velocity.add(0.5 * dt, state.acceleration);
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      state.velocity.local_element(prescribed[k].local_index) = prescribed_velocity[k];
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::account_work()
+  {
+    if (!tracks_work)
+      return;
+    previous_applied_force += applied_force;
+    previous_displacement.sadd(-1., state.displacement);
+    work += 0.5 * (previous_applied_force * previous_displacement);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::kinetic_energy() const
+  {
+    double local = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      local += mass.local_element(i) * state.velocity.local_element(i) *
+               state.velocity.local_element(i);
+    return 0.5 * Utilities::MPI::sum(local, communicator);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::strain_energy() const
+  {
+    return 0.5 * (state.displacement * internal_force);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::external_work() const
+  {
+    return work;
+  }
+
+  template <int dim>
+  typename FEZone<dim>::State &
+  FEZone<dim>::get_state()
+  {
+    return state;
+  }
+
+  template <int dim>
+  const typename FEZone<dim>::State &
+  FEZone<dim>::get_state() const
+  {
+    return state;
+  }
+
+  template <int dim>
+  const std::vector<typename FEZone<dim>::PrescribedDoF> &
+  FEZone<dim>::get_prescribed_dofs() const
+  {
+    return prescribed;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::set_nodal_force_weights(const std::vector<double> &weights)
+  {
+    nodal_force_weights = weights;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::set_interface_force(const std::function<void(VectorType &)> &add_force)
+  {
+    add_interface_force = add_force;
+  }
+
+  // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
+#define PERIARLEQUIN_INSTANTIATE(dim)                                                        \
+  template void FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);      \
+  template std::string FEZone<dim>::name() const;                                            \
+  template void FEZone<dim>::predict(const double);                                          \
+  template void FEZone<dim>::impose_prescribed_motion(const double);                         \
+  template void FEZone<dim>::compute_accelerations(const double);                            \
+  template void FEZone<dim>::correct(const double);                                          \
+  template void FEZone<dim>::account_work();                                                 \
+  template double FEZone<dim>::kinetic_energy() const;                                       \
+  template double FEZone<dim>::strain_energy() const;                                        \
+  template double FEZone<dim>::external_work() const;                                        \
+  template FEZone<dim>::State &FEZone<dim>::get_state();                                     \
+  template const FEZone<dim>::State &FEZone<dim>::get_state() const;                         \
+  template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs() \
+    const;                                                                                   \
+  template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);           \
+  template void FEZone<dim>::set_interface_force(                                            \
+    const std::function<void(FEZone<dim>::VectorType &)> &);
+
+  PERIARLEQUIN_INSTANTIATE(2)
+  PERIARLEQUIN_INSTANTIATE(3)
+#undef PERIARLEQUIN_INSTANTIATE
+} // namespace PeriArlequin

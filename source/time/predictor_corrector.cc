@@ -1,0 +1,130 @@
+#include <periarlequin/time/predictor_corrector.h>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  PredictorCorrector<dim>::PredictorCorrector(const std::vector<IntegratedZone *> &zones,
+                                              ArlequinCoupling<dim>               *coupling,
+                                              const double                         time_step,
+                                              const unsigned int                   n_steps,
+                                              TimerOutput                         &timer)
+    : zones(zones)
+    , coupling(coupling)
+    , time(0., n_steps * time_step, time_step)
+    , timer(timer)
+  {}
+
+  template <int dim>
+  template <typename Action>
+  void
+  PredictorCorrector<dim>::timed(const std::string &section, const Action &what)
+  {
+    TimerOutput::Scope scope(timer, section);
+    what();
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::initialize()
+  {
+    impose_prescribed_motion();
+    slaves_follow_masters();
+    compute_trial_accelerations();
+    if (coupling)
+      timed("coupling", [&] { coupling->set_slave_velocities(); });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::step()
+  {
+    const double dt = time.get_next_step_size();
+    predict(dt);
+    time.advance_time();
+    impose_prescribed_motion();
+    slaves_follow_masters();
+    compute_trial_accelerations();
+    damp_fine_scale();
+    compute_trial_velocities(dt);
+    solve_multipliers_and_correct();
+    account_work();
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::predict(const double dt)
+  {
+    for (IntegratedZone *zone : zones)
+      zone->predict(dt);
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::impose_prescribed_motion()
+  {
+    for (IntegratedZone *zone : zones)
+      zone->impose_prescribed_motion(time.get_current_time());
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::slaves_follow_masters()
+  {
+    if (coupling)
+      timed("coupling", [&] { coupling->set_slave_displacements(); });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::compute_trial_accelerations()
+  {
+    for (IntegratedZone *zone : zones)
+      timed(zone->name() + " forces",
+            [&] { zone->compute_accelerations(time.get_current_time()); });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::damp_fine_scale()
+  {
+    if (coupling)
+      timed("coupling", [&] { coupling->apply_damping(); });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::compute_trial_velocities(const double dt)
+  {
+    for (IntegratedZone *zone : zones)
+      zone->correct(dt);
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::solve_multipliers_and_correct()
+  {
+    if (coupling)
+      timed("coupling", [&] {
+        coupling->enforce_constraint();
+        coupling->set_slave_velocities();
+      });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::account_work()
+  {
+    for (IntegratedZone *zone : zones)
+      zone->account_work();
+  }
+
+  template <int dim>
+  const DiscreteTime &
+  PredictorCorrector<dim>::get_time() const
+  {
+    return time;
+  }
+
+  template class PredictorCorrector<2>;
+  template class PredictorCorrector<3>;
+} // namespace PeriArlequin
