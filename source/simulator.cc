@@ -50,10 +50,23 @@ namespace PeriArlequin
     pd_parameters.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
-    if (coupling_parameters.method != Parameters::CouplingMethod::none)
-      blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
-                                                      pd_parameters.region,
-                                                      geometry);
+    if (coupling_parameters.coupled())
+      {
+        // Quadratic shape functions integrate to zero against alpha next to the alpha = 0
+        // edge, so the blended lumped masses of eq. 50 vanish there.
+        if (fe_parameters.degree != 1)
+          throw_invalid_parameter("Finite elements/Polynomial degree",
+                                  fe_parameters.degree,
+                                  "1 when the zones are coupled (Coupling/Method = " +
+                                    coupling_parameters.method +
+                                    "): the alpha-weighted lumped masses of higher degrees "
+                                    "vanish at the edge of the overlap");
+        coupling = CouplingRegistry<dim>::create(coupling_parameters.method, coupling_parameters);
+        blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
+                                                        coupling->blending_profile(),
+                                                        pd_parameters.region,
+                                                        geometry);
+      }
     monitor_region = output_parameters.monitor_region.empty() ?
                        pd_parameters.region :
                        Region<dim>::parse(output_parameters.monitor_region,
@@ -130,9 +143,7 @@ namespace PeriArlequin
         pd_zone->setup(problem_data, dt);
         if (blending)
           {
-            coupling = std::make_unique<ArlequinCoupling<dim>>(
-              coupling_parameters, *blending, material, *fe_zone, *pd_zone);
-            coupling->setup(dt);
+            coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
           }
         stable_time_step =
           std::min(stable_time_step,
@@ -217,10 +228,10 @@ namespace PeriArlequin
   {
     fe_zone = std::make_unique<FEZone<dim>>(triangulation, fe_parameters, material);
     // Integral blending weighs mass and stiffness with alpha; force blending weighs the
-    // stiffness per node later; the bad coupling keeps the full FE over the overlap.
+    // stiffness per node later; under a step profile the FE keeps its full mass and stiffness.
     using Parameters::Blending;
-    using Parameters::CouplingMethod;
-    const bool     integral_mass = blending && coupling_parameters.method != CouplingMethod::bad;
+    const bool     integral_mass =
+      blending && coupling->blending_profile() == BlendingProfile::linear;
     const bool     integral_stiffness =
       integral_mass && coupling_parameters.blending != Blending::force;
     const auto     one   = [](const Point<dim> &) { return 1.; };
@@ -474,7 +485,7 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  ArlequinCoupling<dim> *
+  Coupling<dim> *
   Simulator<dim>::get_coupling()
   {
     return coupling.get();

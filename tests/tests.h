@@ -247,7 +247,11 @@ namespace PeriArlequinTests
     check_below(name + ": max |total energy drift| / energy scale", drift / scale, bound);
   }
 
-  /** Run a test body under MPI; a failed check or any error gives exit code 1. */
+  /**
+   * Run a test body under MPI; a failed check or any error gives exit code 1. On several
+   * ranks a failure ends all of them (MPI_Abort): a rank that failed alone would otherwise
+   * leave the others waiting in their next collective call.
+   */
   template <typename Body>
   int
   run_test(int argc, char **argv, const Body &body)
@@ -260,6 +264,8 @@ namespace PeriArlequinTests
     catch (const std::exception &error)
       {
         std::cerr << "Test failed: " << error.what() << std::endl;
+        if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+          MPI_Abort(MPI_COMM_WORLD, 1);
         return 1;
       }
     return 0;

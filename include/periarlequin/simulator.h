@@ -9,8 +9,8 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
-#include <periarlequin/coupling/arlequin_coupling.h>
 #include <periarlequin/coupling/blending_field.h>
+#include <periarlequin/coupling/coupling.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
@@ -28,7 +28,7 @@ namespace PeriArlequin
    * PD region covers a cell's centre, PD particles in the PD region), checks the time step
    * against the stable steps of both, integrates in time with velocity Verlet and writes
    * fields, energies and progress. The zones own their state; PredictorCorrector steps them.
-   * With Coupling/Method set, the zones overlap and are glued by ArlequinCoupling inside the
+   * With Coupling/Method set, the zones overlap and are glued by that Coupling inside the
    * predictor-corrector step of eq. 58-69; otherwise a case is pure FE or pure PD, or has
    * independent FE and PD bodies.
    */
@@ -58,7 +58,7 @@ namespace PeriArlequin
     advance();
 
     /** The coupling, or nullptr for an uncoupled case. */
-    ArlequinCoupling<dim> *
+    Coupling<dim> *
     get_coupling();
     /** The blending field, or nullptr for an uncoupled case. */
     const BlendingField<dim> *
@@ -132,7 +132,7 @@ namespace PeriArlequin
     std::unique_ptr<FEZone<dim>>              fe_zone;
     std::unique_ptr<PDZone<dim>>              pd_zone;
     std::unique_ptr<BlendingField<dim>>       blending;
-    std::unique_ptr<ArlequinCoupling<dim>>    coupling;
+    std::unique_ptr<Coupling<dim>>            coupling;
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;

@@ -1,4 +1,5 @@
 #include <periarlequin/coupling/blending_field.h>
+#include <periarlequin/coupling/coupling.h>
 
 #include <cmath>
 #include <sstream>
@@ -11,14 +12,13 @@ namespace PeriArlequin
     Coupling::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Coupling");
+      // Couplings are registered for both dimensions under the same names.
       prm.declare_entry("Method",
                         "none",
-                        Patterns::Selection("none|strict|weak|bad"),
-                        "How the PD and FE zones are glued: none (uncoupled), strict (Arlequin, "
-                        "a Lagrange multiplier on every PD node of the overlap), weak (Arlequin, "
-                        "a multiplier on every FE node of the overlap), bad (the paper's fig. 8: "
-                        "PD nodes of the FE-side half of the overlap follow the FE field, FE "
-                        "nodes of the PD-side half follow the PD field).");
+                        Patterns::Selection("none|" + CouplingRegistry<2>::names()),
+                        "How the PD and FE zones are glued: none (uncoupled) or a registered "
+                        "coupling:" +
+                          CouplingRegistry<2>::documentation());
       prm.declare_entry("Overlap region",
                         "",
                         Patterns::Anything(),
@@ -75,11 +75,7 @@ namespace PeriArlequin
     Coupling::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Coupling");
-      const std::string m = prm.get("Method");
-      method              = m == "strict" ? CouplingMethod::strict :
-                            m == "weak"   ? CouplingMethod::weak :
-                            m == "bad"    ? CouplingMethod::bad :
-                                            CouplingMethod::none;
+      method              = prm.get("Method");
       overlap_text        = prm.get("Overlap region");
       fe_region_text      = prm.get("Finite element region");
       const std::string b = prm.get("Blending");
@@ -94,10 +90,16 @@ namespace PeriArlequin
       damping_overlap_width = prm.get_double("Damping overlap width");
       minimum_mass_weight   = prm.get_double("Minimum PD mass weight");
       prm.leave_subsection();
-      if (method != CouplingMethod::none && !(minimum_mass_weight > 0))
+      if (coupled() && !(minimum_mass_weight > 0))
         throw_invalid_parameter("Coupling/Minimum PD mass weight",
                                 minimum_mass_weight,
                                 "a value in (0, 1] when the zones are coupled");
+    }
+
+    bool
+    Coupling::coupled() const
+    {
+      return method != "none";
     }
   } // namespace Parameters
 
@@ -115,9 +117,10 @@ namespace PeriArlequin
 
   template <int dim>
   BlendingField<dim>::BlendingField(const Parameters::Coupling &coupling,
+                                    const BlendingProfile       profile,
                                     const Region<dim>          &pure_pd_region,
                                     const Parameters::Geometry &geometry)
-    : method(coupling.method)
+    : profile(profile)
     , pure_pd(pure_pd_region)
     , overlap_region(Region<dim>::parse(coupling.overlap_text, "Coupling/Overlap region"))
     , pure_fe(Region<dim>::parse(coupling.fe_region_text, "Coupling/Finite element region"))
@@ -210,7 +213,7 @@ namespace PeriArlequin
       return 0.;
     if (l2 == 0)
       return 1.;
-    if (method == Parameters::CouplingMethod::bad)
+    if (profile == BlendingProfile::step)
       return l1 < l2 ? 0. : 1.;
     return l1 / (l1 + l2);
   }

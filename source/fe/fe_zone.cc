@@ -49,14 +49,7 @@ namespace PeriArlequin
     dof_handler.distribute_dofs(fe_collection);
     locally_owned_dofs    = dof_handler.locally_owned_dofs();
     locally_relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
-
-    TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
-                                               locally_owned_dofs,
-                                               locally_relevant_dofs,
-                                               communicator);
-    DoFTools::make_sparsity_pattern(dof_handler, sparsity);
-    sparsity.compress();
-    stiffness_matrix.reinit(sparsity);
+    reinit_matrix(stiffness_matrix);
     initialize_vector(mass);
     assemble_mass_and_stiffness(stiffness_weight);
   }
@@ -178,6 +171,19 @@ namespace PeriArlequin
   FEZone<dim>::initialize_vector(VectorType &vector) const
   {
     vector.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::reinit_matrix(TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
+                                               locally_owned_dofs,
+                                               locally_relevant_dofs,
+                                               communicator);
+    DoFTools::make_sparsity_pattern(dof_handler, sparsity);
+    sparsity.compress();
+    matrix.reinit(sparsity);
   }
 
   template <int dim>

@@ -351,10 +351,11 @@ namespace PeriArlequin
                              const Point<dim> x = site_position(site);
                              if (!extent(x))
                                return;
-                             Point<dim> unit;
-                             for (unsigned int d = 0; d < dim; ++d)
-                               unit[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
-                             particle_handler.insert_particle(x, unit, site_id(site), cell);
+                             particle_handler.insert_particle(
+                               x,
+                               mapping.transform_real_to_unit_cell(cell, x),
+                               site_id(site),
+                               cell);
                            });
       }
     particle_handler.update_cached_numbers();
@@ -833,6 +834,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  MPI_Comm
+  PDZone<dim>::get_communicator() const
+  {
+    return communicator;
+  }
+
+  template <int dim>
   double
   PDZone<dim>::particle_volume() const
   {
@@ -889,14 +897,15 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  std::vector<typename Triangulation<dim>::active_cell_iterator>
-  PDZone<dim>::owned_particle_cells() const
+  std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
+  PDZone<dim>::owned_particle_locations() const
   {
-    std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
-    cells.reserve(n_owned);
+    std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
+      locations;
+    locations.reserve(n_owned);
     for (const auto &particle : particle_handler)
-      cells.push_back(particle.get_surrounding_cell());
-    return cells;
+      locations.emplace_back(particle.get_surrounding_cell(), particle.get_reference_location());
+    return locations;
   }
 
   template <int dim>

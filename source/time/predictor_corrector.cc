@@ -4,7 +4,7 @@ namespace PeriArlequin
 {
   template <int dim>
   PredictorCorrector<dim>::PredictorCorrector(const std::vector<IntegratedZone *> &zones,
-                                              ArlequinCoupling<dim>               *coupling,
+                                              Coupling<dim>                       *coupling,
                                               const double                         time_step,
                                               const unsigned int                   n_steps,
                                               TimerOutput                         &timer)

@@ -9,7 +9,11 @@
 //    PD sums under an affine field);
 //  - energy blending: reported for overlap widths of 2, 3 and 4 FE cells; the largest ghost
 //    force must fall as the overlap widens (each width below 0.95 of the previous one), since
-//    the continuum limits of both sides cancel and what remains scales with grad alpha;
+//    the continuum limits of both sides cancel and what remains scales with grad alpha. The
+//    narrowest overlap's is bounded by 0.1 of the continuum ghost force that an FE node of the
+//    overlap feels when nothing balances it, int N_I grad alpha . sigma = sigma h^2 / w (Q1
+//    cell h, overlap width w): energy blending cancels it up to the PD lattice-sum error of
+//    the stress (1.3 % at m = 3.015), so 0.1 leaves a factor of about 7;
 //  - the paper's blending: reported (its FE side feels int N_I grad alpha . sigma that nothing
 //    on the PD side balances).
 
@@ -61,17 +65,19 @@ main(int argc, char **argv)
     check_below("force blending, overlap 2 cells: max ghost force / (sigma H)", force.first, 1e-10);
     report("force blending, overlap 2 cells: summed ghost force / (sigma H)", force.second);
 
-    double previous = std::numeric_limits<double>::max();
-    for (const double width : {0.04, 0.06, 0.08})
+    const double h = 0.02, narrowest = 0.04, plate_height = 0.4;
+    double       previous = 0.1 * h * h / (narrowest * plate_height);
+    for (const double width : {narrowest, 0.06, 0.08})
       {
         const std::string cells  = std::to_string(static_cast<int>(std::round(width / 0.02)));
         const auto        energy = ghost_forces(width, "energy");
         report("energy blending, overlap " + cells + " cells: summed ghost force / (sigma H)",
                energy.second);
-        check_below("energy blending, overlap " + cells +
-                      " cells: max ghost force / (sigma H), below 0.95 x the narrower overlap's",
+        check_below("energy blending, overlap " + cells + " cells: max ghost force / (sigma H)" +
+                      (width == narrowest ? ", below 0.1 sigma h^2 / w" :
+                                            ", below 0.95 x the narrower overlap's"),
                     energy.first,
-                    0.95 * previous);
+                    width == narrowest ? previous : 0.95 * previous);
         previous = energy.first;
         const auto paper = ghost_forces(width, "paper");
         report("paper blending, overlap " + cells + " cells: max ghost force / (sigma H)",

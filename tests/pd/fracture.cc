@@ -8,6 +8,11 @@
 //    +-U (1 - cos(pi t / T)) / 2, far-field strain 0.5 s_c at the end) grows damage from the
 //    crack tip: new broken bonds appear, all of them ahead of the tip and near the crack
 //    line; the same plate without the pre-crack breaks no bond.
+// 3. The weighted volume q of a particle whose bonds the pre-crack cuts is that of its full
+//    initial family, sum over the lattice offsets of |xi|^2 V v with the partial volumes v of
+//    eq. 22 (computed here): a pre-cut bond counts like a bond broken during the run, whose
+//    breaking leaves q unchanged, so a given crack and a grown one act alike (exact to
+//    round-off, 1e-12).
 
 #include "../tests.h"
 
@@ -73,6 +78,24 @@ single_bond(const std::string &model = "plane stress")
   check(title + ": bond stays broken after the stretch falls (1 = yes)", broken_after_release, 1, 0);
 }
 
+/** sum over the lattice offsets of |xi|^2 dx^2 v(|xi|) with eq. 22's partial volume, 2D. */
+double
+full_family_weighted_volume(const double dx, const double delta)
+{
+  double     q     = 0;
+  const auto reach = static_cast<int>(std::ceil(delta / dx + 0.5));
+  for (int a = -reach; a <= reach; ++a)
+    for (int b = -reach; b <= reach; ++b)
+      {
+        const double x = dx * std::sqrt(a * a + b * b);
+        if ((a == 0 && b == 0) || x >= delta + dx / 2)
+          continue;
+        const double v = x <= delta - dx / 2 ? 1. : (delta - x) / dx + 0.5;
+        q += x * x * dx * dx * v;
+      }
+  return q;
+}
+
 void
 precracked_plate()
 {
@@ -80,7 +103,7 @@ precracked_plate()
   cracked->run();
   auto       &pd         = *cracked->get_pd_zone();
   const auto  broken     = cracked->get_energy_history().column("broken_bonds");
-  const double delta     = 3.015 * 4e-4;
+  const double dx = 4e-4, delta = 3.015 * dx;
   report("pre-cracked plate: bonds cut by the pre-crack", broken.front());
   report("pre-cracked plate: broken bonds at the end", broken.back());
   check_above("pre-cracked plate: new broken bonds", broken.back() - broken.front(), 20);
@@ -103,6 +126,20 @@ precracked_plate()
   check_below("pre-cracked plate: damage ahead of the tip within 3 horizons of the crack line",
               farthest_from_line / delta,
               3.);
+
+  // The particle just above the crack line at x = 10 mm: far from every boundary, with the
+  // bonds across the line cut.
+  const double q_full  = full_family_weighted_volume(dx, delta);
+  double       q_error = -1;
+  for (unsigned int i = 0; i < pd.n_owned; ++i)
+    if (std::abs(pd.reference_position[i][0] - (0.01 + dx / 2)) < dx / 4 &&
+        std::abs(pd.reference_position[i][1] - (0.02 + dx / 2)) < dx / 4)
+      q_error = std::abs(pd.bonds.weighted_volume[i] / q_full - 1);
+  q_error = Utilities::MPI::max(q_error, MPI_COMM_WORLD);
+  check_above("pre-cracked plate: particle next to the crack line found", q_error, -0.5);
+  check_below("pre-cracked plate: |q / q of the full family - 1| next to the crack line",
+              q_error,
+              1e-12);
 
   auto intact = make_simulator<2>(plate_parameters(4e-4, false, 500));
   intact->run();

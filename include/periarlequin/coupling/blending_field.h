@@ -13,21 +13,17 @@ namespace PeriArlequin
 {
   using namespace dealii;
 
+  /** The shape of alpha across an overlap. */
+  enum class BlendingProfile
+  {
+    /** alpha = l1 / (l1 + l2), eq. 37: linear across a strip. */
+    linear,
+    /** 0 in the half of the overlap next to the PD region, 1 in the other half (fig. 8). */
+    step
+  };
+
   namespace Parameters
   {
-    /** How the two zones are glued. */
-    enum class CouplingMethod
-    {
-      /** No coupling: pure FE, pure PD or independent bodies. */
-      none,
-      /** Arlequin, one multiplier per PD node of the overlap (H = I). */
-      strict,
-      /** Arlequin, one multiplier per FE node of the overlap (H = N). */
-      weak,
-      /** The paper's fig. 8: master-slave across the two halves of the overlap. */
-      bad
-    };
-
     /** Where the blending weight alpha enters the forces (see DESIGN.md section 2). */
     enum class Blending
     {
@@ -50,16 +46,21 @@ namespace PeriArlequin
     /** The Arlequin coupling: zones, blending, multipliers, fine-scale damping. */
     struct Coupling
     {
-      CouplingMethod   method;
+      /** "none" (uncoupled: pure FE, pure PD or independent bodies) or a registered name. */
+      std::string      method = "none";
       /** Overlap (0 < alpha < 1) and pure FE (alpha = 1) regions; pure PD is the PD region. */
       std::string      overlap_text, fe_region_text;
-      Blending         blending;
-      MultiplierSolver multiplier_solver;
-      bool             damping;
-      double           damping_constant;
-      double           damping_wave_speed;
-      double           damping_overlap_width;
-      double           minimum_mass_weight;
+      Blending         blending = Blending::energy;
+      MultiplierSolver multiplier_solver     = MultiplierSolver::diagonal;
+      bool             damping               = true;
+      double           damping_constant      = 30.;
+      double           damping_wave_speed    = 0.;
+      double           damping_overlap_width = 0.;
+      double           minimum_mass_weight   = 0.1;
+
+      /** Are the zones coupled? */
+      bool
+      coupled() const;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -73,7 +74,7 @@ namespace PeriArlequin
    * alpha = l1 / (l1 + l2) in the overlap with l1 the distance to the pure PD region and l2 the
    * distance to the pure FE region, so it is linear across a strip. For the "bad" coupling it
    * is the step that splits the overlap into a PD-to-FE half (alpha = 0) and an FE-to-PD half
-   * (alpha = 1). The constructor checks the zones: they cover the domain, the alpha = 0 and
+   * (alpha = 1) (BlendingProfile::step). The constructor checks the zones: they cover the domain, the alpha = 0 and
    * alpha = 1 edges neither touch nor cross, and the overlap is at least one FE cell wide.
    */
   template <int dim>
@@ -81,6 +82,7 @@ namespace PeriArlequin
   {
   public:
     BlendingField(const Parameters::Coupling &coupling,
+                  const BlendingProfile       profile,
                   const Region<dim>          &pure_pd_region,
                   const Parameters::Geometry &geometry);
 
@@ -104,7 +106,7 @@ namespace PeriArlequin
     overlap() const;
 
   private:
-    Parameters::CouplingMethod method;
+    BlendingProfile            profile;
     Region<dim>                pure_pd, overlap_region, pure_fe;
   };
 } // namespace PeriArlequin

@@ -131,6 +131,13 @@ namespace PeriArlequin
     void
     initialize_vector(VectorType &vector) const;
 
+    /**
+     * Shape a matrix with the coupling pattern of the FE DoFs (entries between DoFs of a
+     * common cell), zero, writable in the rows of locally relevant DoFs.
+     */
+    void
+    reinit_matrix(TrilinosWrappers::SparseMatrix &matrix) const;
+
     /** Internal force K_alpha u (owned entries). */
     void
     compute_internal_force(const VectorType &displacement, VectorType &force) const;

@@ -178,6 +178,8 @@ namespace PeriArlequin
     n_global_broken_bonds() const;
     double
     get_critical_stretch() const;
+    MPI_Comm
+    get_communicator() const;
 
     void
     write_output(const unsigned int step, const double time, const std::string &directory,
@@ -207,9 +209,9 @@ namespace PeriArlequin
     Tensor<1, dim>
     blended_force(const unsigned int i) const;
 
-    /** Cells of the owned particles, in local order. */
-    std::vector<typename Triangulation<dim>::active_cell_iterator>
-    owned_particle_cells() const;
+    /** Cell and unit-cell location of each owned particle, in local order. */
+    std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
+    owned_particle_locations() const;
 
     /**
      * Multilinear interpolation weights of the lattice at @p x: the local indices (owned or

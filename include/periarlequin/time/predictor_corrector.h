@@ -4,7 +4,7 @@
 #include <deal.II/base/discrete_time.h>
 #include <deal.II/base/timer.h>
 
-#include <periarlequin/coupling/arlequin_coupling.h>
+#include <periarlequin/coupling/coupling.h>
 #include <periarlequin/time/integrated_zone.h>
 
 #include <vector>
@@ -30,7 +30,7 @@ namespace PeriArlequin
      * @p n_steps x @p time_step; @p coupling may be nullptr. Sections are timed in @p timer.
      */
     PredictorCorrector(const std::vector<IntegratedZone *> &zones,
-                       ArlequinCoupling<dim>               *coupling,
+                       Coupling<dim>                       *coupling,
                        const double                         time_step,
                        const unsigned int                   n_steps,
                        TimerOutput                         &timer);
@@ -88,7 +88,7 @@ namespace PeriArlequin
     timed(const std::string &section, const Action &what);
 
     std::vector<IntegratedZone *> zones;
-    ArlequinCoupling<dim>        *coupling;
+    Coupling<dim>                *coupling;
     DiscreteTime                  time;
     TimerOutput                  &timer;
   };

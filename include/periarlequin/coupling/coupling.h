@@ -1,0 +1,127 @@
+#ifndef periarlequin_coupling_coupling_h
+#define periarlequin_coupling_coupling_h
+
+#include <deal.II/base/types.h>
+
+#include <periarlequin/base/plugin_registry.h>
+#include <periarlequin/coupling/blending_field.h>
+#include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/pd/pd_zone.h>
+
+#include <memory>
+#include <utility>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * How the PD zone and the FE zone are glued across the overlap: the interface that
+   * PredictorCorrector calls between the parts of a step. An implementation is created by
+   * name (Coupling/Method) from the coupling parameters when the case is read; it says which
+   * blending profile it needs before the zones exist, and is initialised once they do.
+   *
+   * Users add a coupling by deriving from this class and registering it with
+   * PERIARLEQUIN_REGISTER_COUPLING in their own source file.
+   */
+  template <int dim>
+  class Coupling
+  {
+  public:
+    virtual ~Coupling() = default;
+
+    /**
+     * The shape of alpha across the overlap. With a linear profile the FE mass and
+     * stiffness are weighted with alpha; with a step (alpha 0 or 1) both zones keep their
+     * full mass and stiffness where they live.
+     */
+    virtual BlendingProfile
+    blending_profile() const = 0;
+
+    /**
+     * Build the operators once both zones are set up (after FEZone::initialize_state() and
+     * PDZone::setup()); may set the FE zone's force hooks.
+     */
+    virtual void
+    initialize(const BlendingField<dim> &blending,
+               FEZone<dim>              &fe_zone,
+               PDZone<dim>              &pd_zone,
+               const double              time_step) = 0;
+
+    /** Slaves follow their masters' displacements (after the predictor). */
+    virtual void
+    set_slave_displacements() = 0;
+
+    /** Eq. 76-79: damp the fine-scale motion (after the trial accelerations). */
+    virtual void
+    apply_damping() = 0;
+
+    /** Eq. 62-69: make d/dt g vanish at the new time (after the trial velocities). */
+    virtual void
+    enforce_constraint() = 0;
+
+    /** Slaves follow their masters' velocities and accelerations (end of a step). */
+    virtual void
+    set_slave_velocities() = 0;
+
+    /** |g| [m] and |g_dot| [m/s] of the constraint (l2 over all rows); 0 without one. */
+    virtual std::pair<double, double>
+    constraint_residuals() = 0;
+
+    /** Number of multipliers (over all ranks and components). */
+    virtual types::global_dof_index
+    n_multipliers() const = 0;
+
+    /** Overlap PD nodes and slave particles over all ranks. */
+    virtual std::pair<types::global_dof_index, types::global_dof_index>
+    n_coupled_particles() const = 0;
+
+    /** Iterations of the last multiplier solve (0 for a direct or diagonal one). */
+    virtual unsigned int
+    last_solver_iterations() const = 0;
+  };
+
+  template <int dim>
+  class SlaveLayer;
+
+  /**
+   * The FE forces of a coupled run, set as the FE zone's hooks: under force blending the FE
+   * internal force is weighted per node with alpha_I, under energy blending the slaves'
+   * forces act on the FE nodes (N^T f). Shared by the couplings.
+   */
+  template <int dim>
+  void
+  connect_fe_forces(const Parameters::Coupling &parameters,
+                    const BlendingField<dim>   &blending,
+                    FEZone<dim>                &fe_zone,
+                    SlaveLayer<dim>            &slaves);
+
+  /** The registry of couplings: a coupling is created from the coupling parameters. */
+  template <int dim>
+  using CouplingRegistry = PluginRegistry<Coupling<dim>, const Parameters::Coupling &>;
+
+  extern template class PluginRegistry<Coupling<2>, const Parameters::Coupling &>;
+  extern template class PluginRegistry<Coupling<3>, const Parameters::Coupling &>;
+} // namespace PeriArlequin
+
+/**
+ * Register a coupling class template (instantiated for dim = 2 and 3, constructed from the
+ * Parameters::Coupling) under @p name, e.g.
+ * PERIARLEQUIN_REGISTER_COUPLING(MyCoupling, "mine", "what it does").
+ */
+#define PERIARLEQUIN_REGISTER_COUPLING(classname, name, description)                        \
+  namespace                                                                                  \
+  {                                                                                          \
+    const bool periarlequin_registered_coupling_##classname##_2d =                           \
+      PeriArlequin::CouplingRegistry<2>::register_plugin(                                    \
+        name, description, [](const PeriArlequin::Parameters::Coupling &parameters) {        \
+          return std::unique_ptr<PeriArlequin::Coupling<2>>(new classname<2>(parameters));   \
+        });                                                                                  \
+    const bool periarlequin_registered_coupling_##classname##_3d =                           \
+      PeriArlequin::CouplingRegistry<3>::register_plugin(                                    \
+        name, description, [](const PeriArlequin::Parameters::Coupling &parameters) {        \
+          return std::unique_ptr<PeriArlequin::Coupling<3>>(new classname<3>(parameters));   \
+        });                                                                                  \
+  }
+
+#endif

@@ -1,0 +1,82 @@
+#ifndef periarlequin_coupling_multiplier_solver_h
+#define periarlequin_coupling_multiplier_solver_h
+
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/linear_operator.h>
+
+#include <periarlequin/coupling/blending_field.h>
+#include <periarlequin/coupling/multiplier_space.h>
+
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  /**
+   * The multipliers of a step (eq. 64-69): from d/dt g = 0 at t_n+1,
+   *   A lambda = H^T (N v* - w*),   A = dt H^T (N M_c^-1 N^T + M_p^-1) H   (eq. 66-67),
+   * symmetric positive definite. Solved with the paper's row-sum diagonal of A (eq. 68-69),
+   * which needs positive row sums (FE degree 1), or exactly by conjugate gradients
+   * preconditioned with the diagonal of A (Jacobi; positive for any FE degree).
+   */
+  template <int dim>
+  class MultiplierSolver
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+    /**
+     * @p fe_inverse_mass: 1/m_J on the FE DoFs (0 where prescribed) with ghost values;
+     * @p pd_inverse_mass: 1/m_I at the overlap PD nodes (the rows of @p overlap).
+     */
+    MultiplierSolver(MultiplierSpace<dim>             &space,
+                     const InterpolationOperator<dim> &overlap,
+                     const VectorType                 &fe_inverse_mass,
+                     const std::vector<double>        &pd_inverse_mass,
+                     const double                      time_step,
+                     const Parameters::MultiplierSolver method);
+
+    /** Shape a multiplier vector. */
+    void
+    initialize_vector(VectorType &lambda) const;
+
+    /** y = A x (eq. 67). */
+    void
+    vmult(VectorType &y, const VectorType &x);
+
+    /** The paper's diagonal of A (eq. 68): its row sums A 1. */
+    void
+    row_sum_diagonal(VectorType &diagonal);
+
+    /** The diagonal entries of A, the Jacobi preconditioner of the exact solve. */
+    void
+    jacobi_diagonal(VectorType &diagonal) const;
+
+    /** Solve A lambda = @p rhs (eq. 66; eq. 69 with the row-sum diagonal). */
+    void
+    solve(VectorType &lambda, const VectorType &rhs);
+
+    /** CG iterations of the last solve (0 for the diagonal solver). */
+    unsigned int
+    last_iterations() const;
+
+  private:
+    MultiplierSpace<dim>             &space;
+    const InterpolationOperator<dim> &overlap;
+    const VectorType                 &fe_inverse_mass;
+    const std::vector<double>         pd_inverse_mass;
+    const double                      time_step;
+    const Parameters::MultiplierSolver method;
+
+    /** Row sums (diagonal solver) or the inverse diagonal of A (CG preconditioner). */
+    VectorType                        diagonal;
+    DiagonalMatrix<VectorType>        preconditioner;
+    LinearOperator<VectorType>        a_operator;
+    VectorType                        fe_scratch;
+    typename MultiplierSpace<dim>::Values overlap_values, overlap_values_2;
+    unsigned int                      iterations = 0;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,134 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <periarlequin/coupling/multiplier_solver.h>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  MultiplierSolver<dim>::MultiplierSolver(MultiplierSpace<dim>             &space,
+                                          const InterpolationOperator<dim> &overlap,
+                                          const VectorType                 &fe_inverse_mass,
+                                          const std::vector<double>        &pd_inverse_mass,
+                                          const double                      time_step,
+                                          const Parameters::MultiplierSolver method)
+    : space(space)
+    , overlap(overlap)
+    , fe_inverse_mass(fe_inverse_mass)
+    , pd_inverse_mass(pd_inverse_mass)
+    , time_step(time_step)
+    , method(method)
+  {
+    fe_scratch.reinit(fe_inverse_mass);
+    space.initialize_vector(diagonal);
+    if (method == Parameters::MultiplierSolver::diagonal)
+      {
+        // Positive for FE_Q1, whose shape functions are non-negative: A has no negative
+        // entry. Shape functions that change sign can make a row sum vanish, while CG only
+        // needs A to be positive definite.
+        row_sum_diagonal(diagonal);
+        for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
+          AssertThrow(diagonal.local_element(m) > 0,
+                      ExcMessage("Invalid input: parameter 'Coupling/Multiplier solver' = "
+                                 "'diagonal'; a row sum of the multiplier matrix A is not "
+                                 "positive; allowed: 'cg' (conjugate gradients preconditioned "
+                                 "by the diagonal of A, positive since A is positive "
+                                 "definite)."));
+        return;
+      }
+    jacobi_diagonal(diagonal);
+    for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
+      diagonal.local_element(m) = 1. / diagonal.local_element(m);
+    preconditioner.reinit(diagonal);
+    a_operator.vmult = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
+    a_operator.reinit_range_vector  = [this](VectorType &v, const bool) {
+      this->space.initialize_vector(v);
+    };
+    a_operator.reinit_domain_vector = a_operator.reinit_range_vector;
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::initialize_vector(VectorType &lambda) const
+  {
+    space.initialize_vector(lambda);
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::vmult(VectorType &y, const VectorType &x)
+  {
+    // A x = dt H^T (N M_c^-1 N^T + M_p^-1) H x
+    space.apply_h(x, overlap_values);
+    overlap.Tvmult(fe_scratch, overlap_values);
+    fe_scratch.scale(fe_inverse_mass);
+    fe_scratch.update_ghost_values();
+    overlap.vmult(overlap_values_2, fe_scratch);
+    for (unsigned int r = 0; r < overlap.n_rows(); ++r)
+      overlap_values_2[r] += pd_inverse_mass[r] * overlap_values[r];
+    space.apply_transpose_h(overlap_values_2, y);
+    y *= time_step;
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::row_sum_diagonal(VectorType &row_sums)
+  {
+    VectorType ones;
+    space.initialize_vector(ones);
+    ones = 1.;
+    vmult(row_sums, ones);
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::jacobi_diagonal(VectorType &entries) const
+  {
+    space.diagonal_of_projection(fe_inverse_mass, pd_inverse_mass, entries);
+    entries *= time_step;
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::solve(VectorType &lambda, const VectorType &rhs)
+  {
+    iterations = 0;
+    if (method == Parameters::MultiplierSolver::diagonal)
+      {
+        for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
+          lambda.local_element(m) = rhs.local_element(m) / diagonal.local_element(m);
+        return;
+      }
+    const double rhs_norm = rhs.l2_norm();
+    if (rhs_norm == 0)
+      {
+        lambda = 0.;
+        return;
+      }
+    // Start from the Jacobi solution; stop at a relative residual of 1e-12.
+    preconditioner.vmult(lambda, rhs);
+    SolverControl         control(1000, 1e-12 * rhs_norm, false, false);
+    SolverCG<VectorType>  cg(control);
+    try
+      {
+        cg.solve(a_operator, lambda, rhs, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        AssertThrow(false,
+                    ExcMessage("The multiplier CG solve did not reach a relative residual of "
+                               "1e-12 in 1000 iterations."));
+      }
+    iterations = control.last_step();
+  }
+
+  template <int dim>
+  unsigned int
+  MultiplierSolver<dim>::last_iterations() const
+  {
+    return iterations;
+  }
+
+  template class MultiplierSolver<2>;
+  template class MultiplierSolver<3>;
+} // namespace PeriArlequin
