@@ -2,7 +2,8 @@
  * periarlequin: run a case described by a deal.II parameter file.
  *
  *   periarlequin input.prm                 run (serial, or under mpirun)
- *   periarlequin --check input.prm         parse and validate the parameters only
+ *   periarlequin --check input.prm         parse and validate: set the case up (mesh, zones,
+ *                                          coupling, stable step) without running or writing
  *   periarlequin --print-parameters [2|3]  print every parameter with default and documentation
  */
 #include <deal.II/base/mpi.h>
@@ -37,6 +38,7 @@ namespace
     PeriArlequin::Simulator<dim> simulator(prm, MPI_COMM_WORLD);
     if (check_only)
       {
+        simulator.setup();
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           std::cout << "Parameters of '" << file_name << "' are valid." << std::endl;
         return;

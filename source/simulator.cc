@@ -30,6 +30,17 @@ namespace PeriArlequin
     Parameters::Peridynamics<dim>::declare_parameters(prm);
     Parameters::Coupling::declare_parameters(prm);
     ProblemData<dim>::declare_parameters(prm);
+    prm.enter_subsection("Postprocess");
+    prm.declare_entry("List of postprocessors",
+                      "energies, monitor region energies, constraint residuals",
+                      Patterns::MultipleSelection(PostprocessorRegistry<dim>::names()),
+                      "Postprocessors that add columns to the energy history (CSV) at every "
+                      "recorded step (Output/Energy interval), by registered name:" +
+                        PostprocessorRegistry<dim>::documentation() +
+                        "\nA postprocessor's own parameters are in the subsection of its "
+                        "name.");
+    PostprocessorRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -50,6 +61,16 @@ namespace PeriArlequin
     pd_parameters.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
+    if (!pd_parameters.region.empty())
+      {
+        prm.enter_subsection("Peridynamics");
+        pd_material = PDMaterialRegistry<dim>::create(pd_parameters.material_model, prm);
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Postprocess");
+    for (const auto &name : Utilities::split_string_list(prm.get("List of postprocessors")))
+      postprocessors.push_back(PostprocessorRegistry<dim>::create(name, prm));
+    prm.leave_subsection();
     if (coupling_parameters.coupled())
       {
         // Quadratic shape functions integrate to zero against alpha next to the alpha = 0
@@ -61,7 +82,10 @@ namespace PeriArlequin
                                     coupling_parameters.method +
                                     "): the alpha-weighted lumped masses of higher degrees "
                                     "vanish at the edge of the overlap");
-        coupling = CouplingRegistry<dim>::create(coupling_parameters.method, coupling_parameters);
+        prm.enter_subsection("Coupling");
+        coupling =
+          CouplingRegistry<dim>::create(coupling_parameters.method, prm, coupling_parameters);
+        prm.leave_subsection();
         blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
                                                         coupling->blending_profile(),
                                                         pd_parameters.region,
@@ -110,7 +134,7 @@ namespace PeriArlequin
             };
           }
         pd_zone = std::make_unique<PDZone<dim>>(
-          triangulation, pd_parameters, material, geometry, extent);
+          triangulation, pd_parameters, material, geometry, std::move(pd_material), extent);
         if (blending)
           pd_zone->set_blending([this](const Point<dim> &x) { return blending->value(x); },
                                 coupling_parameters.blending == Parameters::Blending::energy,
@@ -167,36 +191,6 @@ namespace PeriArlequin
       zones, coupling.get(), dt, n_steps, timer);
     integrator->initialize();
 
-    if (output_parameters.output_interval > 0 || output_parameters.energy_interval > 0)
-      {
-        if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          std::filesystem::create_directories(output_parameters.directory);
-        MPI_Barrier(communicator);
-      }
-    energy_history = std::make_unique<EnergyHistory>(
-      std::vector<std::string>{"step",
-                               "time",
-                               "kinetic_energy",
-                               "strain_energy",
-                               "external_work",
-                               "total_energy",
-                               "fe_kinetic_energy",
-                               "fe_strain_energy",
-                               "pd_kinetic_energy",
-                               "pd_strain_energy",
-                               "broken_bonds",
-                               "pure_pd_kinetic_energy",
-                               "pure_pd_strain_energy",
-                               "pure_pd_energy",
-                               "constraint_residual",
-                               "constraint_rate_residual"},
-      output_parameters.energy_interval > 0 ?
-        output_parameters.directory + "/" + output_parameters.base_name + "_energy.csv" :
-        std::string(),
-      communicator);
-    if (fe_zone)
-      fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
-
     pcout << "PeriArlequin " << dim << "D"
           << (dim == 2 ? (material.planar_model == Parameters::PlanarModel::plane_stress ?
                             " (plane stress)" :
@@ -251,46 +245,44 @@ namespace PeriArlequin
 
   template <int dim>
   unsigned int
-  Simulator<dim>::step() const
+  Simulator<dim>::get_step_number() const
   {
     return integrator->get_time().get_step_number();
   }
 
   template <int dim>
   void
-  Simulator<dim>::record_energies()
+  Simulator<dim>::prepare_output()
+  {
+    if (output_parameters.output_interval > 0 || output_parameters.energy_interval > 0)
+      {
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::filesystem::create_directories(output_parameters.directory);
+        MPI_Barrier(communicator);
+      }
+    energy_history = std::make_unique<EnergyHistory>(
+      output_parameters.energy_interval > 0 ?
+        output_parameters.directory + "/" + output_parameters.base_name + "_energy.csv" :
+        std::string(),
+      communicator);
+    if (fe_zone)
+      fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::record_statistics()
   {
     TimerOutput::Scope scope(timer, "energies");
-    const double fe_kinetic = fe_zone ? fe_zone->kinetic_energy() : 0.;
-    const double fe_strain  = fe_zone ? fe_zone->strain_energy() : 0.;
-    const double pd_kinetic = pd_zone ? pd_zone->kinetic_energy() : 0.;
-    const double pd_strain  = pd_zone ? pd_zone->strain_energy() : 0.;
-    double       work       = 0;
+    double             energy = 0;
     for (const IntegratedZone *zone : zones)
-      work += zone->external_work();
-    const double broken = pd_zone ? pd_zone->n_global_broken_bonds() : 0;
-    const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
-    check_finite(kinetic + strain);
-    const auto pure_pd =
-      pd_zone ? pd_zone->energies_in(monitor_region) : std::pair<double, double>();
-    const auto residuals =
-      coupling ? coupling->constraint_residuals() : std::pair<double, double>();
-    energy_history->add_row({static_cast<double>(step()),
-                             get_time(),
-                             kinetic,
-                             strain,
-                             work,
-                             kinetic + strain - work,
-                             fe_kinetic,
-                             fe_strain,
-                             pd_kinetic,
-                             pd_strain,
-                             broken,
-                             pure_pd.first,
-                             pure_pd.second,
-                             pure_pd.first + pure_pd.second,
-                             residuals.first,
-                             residuals.second});
+      energy += zone->kinetic_energy() + zone->strain_energy();
+    check_finite(energy);
+    energy_history->add_value("step", get_step_number());
+    energy_history->add_value("time", get_time());
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->execute(*this, *energy_history);
+    energy_history->end_row();
   }
 
   template <int dim>
@@ -300,7 +292,7 @@ namespace PeriArlequin
     if (std::isfinite(energy))
       return;
     std::ostringstream message;
-    message << "The solution is not finite at step " << step() << " (t = " << get_time()
+    message << "The solution is not finite at step " << get_step_number() << " (t = " << get_time()
             << " s): an unstable time step, or initial data, loads or boundary values that "
                "evaluate to NaN or infinity.";
     AssertThrow(false, ExcMessage(message.str()));
@@ -322,10 +314,10 @@ namespace PeriArlequin
   {
     TimerOutput::Scope scope(timer, "output");
     if (fe_output)
-      fe_output->write(step(), get_time(), get_displacement(), get_velocity());
+      fe_output->write(get_step_number(), get_time(), get_displacement(), get_velocity());
     if (pd_zone)
       pd_zone->write_output(
-        step(), get_time(), output_parameters.directory, output_parameters.base_name);
+        get_step_number(), get_time(), output_parameters.directory, output_parameters.base_name);
     if (!sample_segment.empty())
       write_line_samples();
   }
@@ -391,7 +383,7 @@ namespace PeriArlequin
     });
     std::ostringstream name;
     name << output_parameters.directory << "/" << output_parameters.base_name << "_line_"
-         << std::setw(6) << std::setfill('0') << step() << ".csv";
+         << std::setw(6) << std::setfill('0') << get_step_number() << ".csv";
     std::ofstream out(name.str());
     const char *axes[] = {"x", "y", "z"};
     out << "zone";
@@ -423,7 +415,7 @@ namespace PeriArlequin
     last_progress_time = wall;
     // Energies may not be recorded: make sure the state is finite when progress is shown.
     check_finite(kinetic_energy());
-    const unsigned int n = step();
+    const unsigned int n = get_step_number();
     const double remaining = n > 0 ? wall * (n_steps - n) / n : 0.;
     pcout << "  step " << n << "/" << n_steps << ", t = " << std::setprecision(4)
           << std::scientific << get_time() << " s, wall " << std::fixed << std::setprecision(1)
@@ -437,24 +429,25 @@ namespace PeriArlequin
   {
     if (!setup_done)
       setup();
+    prepare_output();
     const auto due = [&](const unsigned int interval) {
-      return interval > 0 && (step() % interval == 0 || step() == n_steps);
+      return interval > 0 && (get_step_number() % interval == 0 || get_step_number() == n_steps);
     };
 
     if (due(output_parameters.energy_interval))
-      record_energies();
+      record_statistics();
     if (due(output_parameters.output_interval))
       write_output();
 
     wall_clock.restart();
-    while (step() < n_steps)
+    while (get_step_number() < n_steps)
       {
         advance();
         if (due(output_parameters.energy_interval))
-          record_energies();
+          record_statistics();
         if (due(output_parameters.output_interval))
           write_output();
-        report_progress(step() == n_steps);
+        report_progress(get_step_number() == n_steps);
       }
     const double loop_time = wall_clock.wall_time();
     check_finite(kinetic_energy());
@@ -492,10 +485,31 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  const BlendingField<dim> *
-  Simulator<dim>::get_blending_field() const
+  const Coupling<dim> *
+  Simulator<dim>::get_coupling() const
   {
-    return blending.get();
+    return coupling.get();
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::has_fe_zone() const
+  {
+    return fe_zone != nullptr;
+  }
+
+  template <int dim>
+  const PDZone<dim> *
+  Simulator<dim>::get_pd_zone() const
+  {
+    return pd_zone.get();
+  }
+
+  template <int dim>
+  const Region<dim> &
+  Simulator<dim>::get_monitor_region() const
+  {
+    return monitor_region;
   }
 
   template <int dim>

@@ -15,6 +15,7 @@
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
 #include <periarlequin/pd/pd_zone.h>
+#include <periarlequin/postprocess/postprocessor.h>
 #include <periarlequin/time/predictor_corrector.h>
 
 #include <memory>
@@ -45,11 +46,15 @@ namespace PeriArlequin
     /** Parse (and validate) a parameter handler filled by declare_parameters(). */
     Simulator(ParameterHandler &prm, const MPI_Comm communicator);
 
-    /** Mesh, DoFs, matrices, initial state and the stable-step check. */
+    /**
+     * Mesh, zones, DoFs, matrices, coupling, initial state and every check that needs them
+     * (the PD region in the domain, the horizon covered by the ghost layer, the overlap, the
+     * stable step). Writes no file: `periarlequin --check` runs it.
+     */
     void
     setup();
 
-    /** setup() if not done yet, then the time loop to the end time. */
+    /** setup() if not done yet, then output files and the time loop to the end time. */
     void
     run();
 
@@ -60,11 +65,13 @@ namespace PeriArlequin
     /** The coupling, or nullptr for an uncoupled case. */
     Coupling<dim> *
     get_coupling();
-    /** The blending field, or nullptr for an uncoupled case. */
-    const BlendingField<dim> *
-    get_blending_field() const;
+    const Coupling<dim> *
+    get_coupling() const;
 
-    /** The FE zone; only valid if the case has FE cells. */
+    /** Does the case have FE cells? */
+    bool
+    has_fe_zone() const;
+    /** The FE zone; only valid if has_fe_zone(). */
     FEZone<dim> &
     get_fe_zone();
     const FEZone<dim> &
@@ -72,6 +79,14 @@ namespace PeriArlequin
     /** The PD zone, or nullptr if the case has none. */
     PDZone<dim> *
     get_pd_zone();
+    const PDZone<dim> *
+    get_pd_zone() const;
+    /** Where the pure-PD energies are measured (Output/Monitor region). */
+    const Region<dim> &
+    get_monitor_region() const;
+    /** The number of steps taken. */
+    unsigned int
+    get_step_number() const;
     const ProblemData<dim> &
     get_problem_data() const;
     const EnergyHistory &
@@ -92,8 +107,12 @@ namespace PeriArlequin
   private:
     void
     setup_fe_zone();
+    /** Output directory, energy history file and FE output writer. */
     void
-    record_energies();
+    prepare_output();
+    /** A row of the history: step, time and the postprocessors' columns. */
+    void
+    record_statistics();
     /** Throw a clear error if the state (measured by an energy) is no longer finite. */
     void
     check_finite(const double energy) const;
@@ -107,9 +126,6 @@ namespace PeriArlequin
     write_line_samples();
     void
     report_progress(const bool force);
-    /** The current step number. */
-    unsigned int
-    step() const;
 
     const MPI_Comm      communicator;
     ConditionalOStream  pcout;
@@ -134,6 +150,8 @@ namespace PeriArlequin
     std::unique_ptr<BlendingField<dim>>       blending;
     std::unique_ptr<Coupling<dim>>            coupling;
     std::unique_ptr<FEOutput<dim>>            fe_output;
+    std::unique_ptr<PDMaterialModel<dim>>     pd_material;
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;
     /** The zones the case has, PD before FE (the order the integrator needs). */

@@ -75,7 +75,7 @@ namespace PeriArlequin
   void
   ArlequinCoupling<dim>::constraint(const VectorType                  &x,
                                     const std::vector<Tensor<1, dim>> &y,
-                                    VectorType                        &g)
+                                    VectorType                        &g) const
   {
     x.update_ghost_values();
     overlap.vmult(overlap_values, x);
@@ -135,7 +135,7 @@ namespace PeriArlequin
 
   template <int dim>
   std::pair<double, double>
-  ArlequinCoupling<dim>::constraint_residuals()
+  ArlequinCoupling<dim>::constraint_residuals() const
   {
     const auto &state = fe_zone->get_state();
     VectorType  g;

@@ -18,7 +18,9 @@ namespace PeriArlequin
                         Patterns::Selection("none|" + CouplingRegistry<2>::names()),
                         "How the PD and FE zones are glued: none (uncoupled) or a registered "
                         "coupling:" +
-                          CouplingRegistry<2>::documentation());
+                          CouplingRegistry<2>::documentation() +
+                          "\nA coupling's own parameters are in the subsection of its name.");
+      CouplingRegistry<2>::declare_parameters(prm);
       prm.declare_entry("Overlap region",
                         "",
                         Patterns::Anything(),

@@ -5,6 +5,11 @@ namespace PeriArlequin
 {
   template <int dim>
   void
+  Coupling<dim>::parse_parameters(ParameterHandler &)
+  {}
+
+  template <int dim>
+  void
   connect_fe_forces(const Parameters::Coupling &parameters,
                     const BlendingField<dim>   &blending,
                     FEZone<dim>                &fe_zone,
@@ -38,6 +43,8 @@ namespace PeriArlequin
                     FEZone<3> &,
                     SlaveLayer<3> &);
 
+  template class Coupling<2>;
+  template class Coupling<3>;
   template class PluginRegistry<Coupling<2>, const Parameters::Coupling &>;
   template class PluginRegistry<Coupling<3>, const Parameters::Coupling &>;
 } // namespace PeriArlequin

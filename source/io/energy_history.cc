@@ -7,29 +7,53 @@
 
 namespace PeriArlequin
 {
-  EnergyHistory::EnergyHistory(std::vector<std::string> column_names,
-                               const std::string       &csv_file_name,
-                               const MPI_Comm           communicator)
-    : names(std::move(column_names))
+  EnergyHistory::EnergyHistory(const std::string &csv_file_name, const MPI_Comm communicator)
+    : file_name(csv_file_name)
+    , root(Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+  void
+  EnergyHistory::add_value(const std::string &name, const double value)
   {
-    if (csv_file_name.empty() || Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
-    csv.open(csv_file_name);
-    AssertThrow(csv, ExcMessage("Cannot open the energy history file '" + csv_file_name + "'."));
-    for (unsigned int i = 0; i < names.size(); ++i)
-      csv << (i ? "," : "") << names[i];
-    csv << '\n' << std::setprecision(12);
+    AssertThrow(std::find(row_names.begin(), row_names.end(), name) == row_names.end(),
+                ExcMessage("The history column '" + name + "' is given twice in one row."));
+    AssertThrow(table.empty() || std::find(names.begin(), names.end(), name) != names.end(),
+                ExcMessage("The history column '" + name +
+                           "' is not one of the columns of the first row."));
+    row_names.push_back(name);
+    row_values.push_back(value);
   }
 
   void
-  EnergyHistory::add_row(const std::vector<double> &values)
+  EnergyHistory::end_row()
   {
-    Assert(values.size() == names.size(), ExcDimensionMismatch(values.size(), names.size()));
-    table.push_back(values);
+    if (table.empty())
+      {
+        names = row_names;
+        if (root && !file_name.empty())
+          {
+            csv.open(file_name);
+            AssertThrow(csv,
+                        ExcMessage("Cannot open the energy history file '" + file_name + "'."));
+            for (unsigned int i = 0; i < names.size(); ++i)
+              csv << (i ? "," : "") << names[i];
+            csv << '\n' << std::setprecision(12);
+          }
+      }
+    AssertThrow(row_names.size() == names.size(),
+                ExcMessage("A history row gives " + std::to_string(row_names.size()) +
+                           " columns, the first row " + std::to_string(names.size()) + "."));
+    // The values in the order of the first row.
+    std::vector<double> row(names.size());
+    for (unsigned int k = 0; k < row_names.size(); ++k)
+      row[std::find(names.begin(), names.end(), row_names[k]) - names.begin()] = row_values[k];
+    table.push_back(row);
+    row_names.clear();
+    row_values.clear();
     if (!csv.is_open())
       return;
-    for (unsigned int i = 0; i < values.size(); ++i)
-      csv << (i ? "," : "") << values[i];
+    for (unsigned int i = 0; i < row.size(); ++i)
+      csv << (i ? "," : "") << row[i];
     csv << '\n';
     csv.flush();
   }

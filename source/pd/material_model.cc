@@ -8,55 +8,9 @@
 namespace PeriArlequin
 {
   template <int dim>
-  std::map<std::string, typename PDMaterialRegistry<dim>::Entry> &
-  PDMaterialRegistry<dim>::models()
-  {
-    static std::map<std::string, Entry> registered;
-    return registered;
-  }
-
-  template <int dim>
-  bool
-  PDMaterialRegistry<dim>::register_model(const std::string &name,
-                                          const std::string &description,
-                                          Creator            creator)
-  {
-    AssertThrow(models().count(name) == 0,
-                ExcMessage("A PD material model named '" + name + "' is already registered."));
-    models()[name] = {description, std::move(creator)};
-    return true;
-  }
-
-  template <int dim>
-  std::unique_ptr<PDMaterialModel<dim>>
-  PDMaterialRegistry<dim>::create(const std::string &name)
-  {
-    const auto entry = models().find(name);
-    AssertThrow(entry != models().end(),
-                ExcMessage("Invalid input: parameter 'Peridynamics/Material model' = '" + name +
-                           "'; allowed: one of " + names() + "."));
-    return entry->second.creator();
-  }
-
-  template <int dim>
-  std::string
-  PDMaterialRegistry<dim>::names()
-  {
-    std::string list;
-    for (const auto &entry : models())
-      list += (list.empty() ? "" : "|") + entry.first;
-    return list;
-  }
-
-  template <int dim>
-  std::string
-  PDMaterialRegistry<dim>::documentation()
-  {
-    std::string text;
-    for (const auto &entry : models())
-      text += " '" + entry.first + "': " + entry.second.description + ".";
-    return text;
-  }
+  void
+  PDMaterialModel<dim>::parse_parameters(ParameterHandler &)
+  {}
 
   template <int dim>
   void
@@ -214,12 +168,27 @@ namespace PeriArlequin
     return std::sqrt(4. * numbers::PI * energy_release_rate / (9. * youngs_modulus * horizon));
   }
 
-  template class PDMaterialRegistry<2>;
-  template class PDMaterialRegistry<3>;
+  template class PDMaterialModel<2>;
+  template class PDMaterialModel<3>;
+  template class PluginRegistry<PDMaterialModel<2>>;
+  template class PluginRegistry<PDMaterialModel<3>>;
   template class LinearPeridynamicSolid<2>;
   template class LinearPeridynamicSolid<3>;
 
-  PERIARLEQUIN_REGISTER_PD_MATERIAL(LinearPeridynamicSolid,
-                                    "LPS",
-                                    "state-based linear peridynamic solid (3D, 2D plane stress and plane strain)")
+  namespace
+  {
+    // The LPS model has no parameters of its own: it reads the common material constants.
+    template <int dim>
+    bool
+    register_linear_peridynamic_solid()
+    {
+      return PDMaterialRegistry<dim>::register_plugin(
+        "LPS",
+        "state-based linear peridynamic solid (3D, 2D plane stress and plane strain)",
+        [] { return std::unique_ptr<PDMaterialModel<dim>>(new LinearPeridynamicSolid<dim>()); });
+    }
+
+    const bool linear_peridynamic_solid_registered =
+      register_linear_peridynamic_solid<2>() && register_linear_peridynamic_solid<3>();
+  } // namespace
 } // namespace PeriArlequin

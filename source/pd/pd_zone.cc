@@ -41,9 +41,11 @@ namespace PeriArlequin
                         "m = delta / dx, the horizon in lattice spacings, >= 1 [-].");
       prm.declare_entry("Material model",
                         "LPS",
-                        Patterns::Anything(),
-                        "Name of a registered PD material model. Registered:" +
-                          PDMaterialRegistry<dim>::documentation());
+                        Patterns::Selection(PDMaterialRegistry<dim>::names()),
+                        "The PD material model, by its registered name:" +
+                          PDMaterialRegistry<dim>::documentation() +
+                          "\nA model's own parameters are in the subsection of its name.");
+      PDMaterialRegistry<dim>::declare_parameters(prm);
       prm.declare_entry("Fracture",
                         "false",
                         Patterns::Bool(),
@@ -128,11 +130,6 @@ namespace PeriArlequin
         throw_invalid_parameter("Peridynamics/Horizon factor",
                                 horizon_factor,
                                 "a value >= 1 (the horizon spans at least one lattice spacing)");
-      const std::string models = PDMaterialRegistry<dim>::names();
-      if (("|" + models + "|").find("|" + material_model + "|") == std::string::npos)
-        throw_invalid_parameter("Peridynamics/Material model",
-                                material_model,
-                                "one of the registered models " + models);
       if (fracture && critical_stretch == 0 && !(energy_release_rate > 0))
         throw_invalid_parameter("Peridynamics/Critical energy release rate",
                                 energy_release_rate,
@@ -146,12 +143,14 @@ namespace PeriArlequin
                       const Parameters::Peridynamics<dim>       &parameters,
                       const Parameters::Material                &material,
                       const Parameters::Geometry                &geometry,
+                      std::unique_ptr<PDMaterialModel<dim>>      model,
                       const SiteFilter                          &extent)
     : triangulation(triangulation)
     , parameters(parameters)
     , material(material)
     , communicator(triangulation.get_communicator())
     , mapping(1)
+    , model(std::move(model))
     , extent(extent ? extent : SiteFilter([this](const Point<dim> &x) {
         return this->parameters.region.contains(x);
       }))
@@ -181,7 +180,6 @@ namespace PeriArlequin
                                   "'Geometry/Upper corner'");
         }
     bonds.build_stencil(dx, parameters.horizon());
-    model = PDMaterialRegistry<dim>::create(parameters.material_model);
   }
 
   template <int dim>

@@ -1,8 +1,8 @@
 ## Runs the application on one invalid parameter file and checks that it fails cleanly: it
 ## ends by itself (a hung rank is a failure), with a non-zero exit code and the expected
 ## message. The expected message comes from -DEXPECT or else from the file's first line;
-## -DLAUNCHER (a list, e.g. mpiexec;-np;2) runs it on several ranks; without -DPRM the
-## program runs without arguments.
+## -DLAUNCHER (a list, e.g. mpiexec;-np;2) runs it on several ranks; -DARGS (e.g. --check)
+## come before the file; without -DPRM the program runs without arguments.
 if(DEFINED EXPECT)
   set(_expected "${EXPECT}")
 else()
@@ -12,7 +12,7 @@ else()
     message(FATAL_ERROR "${PRM}: the first line must read '# expect: <regex>'.")
   endif()
 endif()
-execute_process(COMMAND ${LAUNCHER} ${APP} ${PRM}
+execute_process(COMMAND ${LAUNCHER} ${APP} ${ARGS} ${PRM}
   RESULT_VARIABLE _result OUTPUT_VARIABLE _out ERROR_VARIABLE _err TIMEOUT 120)
 set(_all "${_out}${_err}")
 if(NOT "${_result}" MATCHES "^[0-9]+$")

@@ -1,11 +1,14 @@
 // A user adds a PD material model without editing the library: this file defines a
-// bond-based prototype micro-elastic brittle (PMB) model, registers it under the name
-// "calibrated PMB" with PERIARLEQUIN_REGISTER_PD_MATERIAL, and runs it by naming it in the
-// parameter file. Its micromodulus is calibrated on the lattice so that the dilatation
+// bond-based prototype micro-elastic brittle (PMB) model with a parameter of its own
+// ("Peridynamics/calibrated PMB/Stiffness factor", scaling the micromodulus), registers it
+// under the name "calibrated PMB" with PERIARLEQUIN_REGISTER_PD_MATERIAL, and runs it by
+// naming it in the parameter file. Its micromodulus is calibrated on the lattice so that the dilatation
 // energy is exactly classical: W = (c / 4) sum s^2 x V v with c = 18 K / sum x V v (3D) or
 // 4 E / ((1 - nu) sum x V v) (plane stress). Checked: under a pure dilatation the interior
 // force vanishes (1e-10 of the surface force: round-off) and W equals the classical
-// 9 K eps^2 / 2 (3D) or E eps^2 / (1 - nu) (plane stress) to 1e-10 (exact by construction).
+// 9 K eps^2 / 2 (3D) or E eps^2 / (1 - nu) (plane stress) to 1e-10 (exact by construction);
+// with the stiffness factor set to 2.5 in the parameter file, W is 2.5 times that (the
+// parameter reached the model).
 // The strain is 1e-4 because this simple model computes the stretch as a difference of
 // lengths, whose round-off is 1e-16 / strain relative.
 
@@ -22,6 +25,19 @@ namespace UserModels
   class CalibratedPMB : public PeriArlequin::PDMaterialModel<dim>
   {
   public:
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Stiffness factor",
+                        "1",
+                        Patterns::Double(0),
+                        "Factor on the calibrated micromodulus [-].");
+    }
+    void
+    parse_parameters(ParameterHandler &prm) override
+    {
+      stiffness_factor = prm.get_double("Stiffness factor");
+    }
     void
     initialize(const PeriArlequin::Parameters::Material &material,
                const BondFamilies<dim>                  &bonds) override
@@ -29,8 +45,10 @@ namespace UserModels
       double moment = 0; // sum x V v over a full family
       for (const auto &bond : bonds.stencil)
         moment += bond.length * bond.volume;
-      micromodulus = dim == 3 ? 18 * material.bulk_modulus() / moment :
-                                4 * material.youngs_modulus / ((1 - material.poissons_ratio) * moment);
+      micromodulus = stiffness_factor *
+                     (dim == 3 ? 18 * material.bulk_modulus() / moment :
+                                 4 * material.youngs_modulus /
+                                   ((1 - material.poissons_ratio) * moment));
       youngs_modulus = material.youngs_modulus;
     }
     unsigned int
@@ -88,7 +106,7 @@ namespace UserModels
     }
 
   private:
-    double micromodulus = 0, youngs_modulus = 0;
+    double stiffness_factor = 1, micromodulus = 0, youngs_modulus = 0;
   };
 
   PERIARLEQUIN_REGISTER_PD_MATERIAL(CalibratedPMB,
@@ -100,7 +118,7 @@ using namespace PeriArlequinTests;
 
 template <int dim>
 void
-check_user_model()
+check_user_model(const double stiffness_factor)
 {
   const double eps = 1e-4, dx = 1e-3, E = 69e9, nu = 0.3;
   const double classical =
@@ -112,7 +130,9 @@ check_user_model()
       << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "4, 4, 4") << "\nend\n"
       << "subsection Peridynamics\n  set Region = "
       << (dim == 2 ? "0, 0 : 0.02, 0.02" : "0, 0, 0 : 0.016, 0.016, 0.016")
-      << "\n  set Lattice spacing = " << dx << "\n  set Material model = calibrated PMB\nend\n"
+      << "\n  set Lattice spacing = " << dx << "\n  set Material model = calibrated PMB\n"
+      << "  subsection calibrated PMB\n    set Stiffness factor = " << stiffness_factor
+      << "\n  end\nend\n"
       << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
       << "subsection Initial conditions\n  subsection Displacement\n"
       << "    set Function expression = " << eps << "*x; " << eps << "*y"
@@ -133,16 +153,23 @@ check_user_model()
       if (interior)
         inner = std::max(inner, pd.force_density[i].norm()), energy = pd.energy_density[i];
     }
-  const std::string title = std::to_string(dim) + "D calibrated PMB (user model)";
-  check_below(title + ": max interior |force| / max surface |force|", inner / largest, 1e-10);
-  check(title + ": W / classical under pure dilatation", energy / classical, 1., 1e-10);
+  std::ostringstream title;
+  title << dim << "D calibrated PMB (user model), stiffness factor " << stiffness_factor;
+  check_below(title.str() + ": max interior |force| / max surface |force|",
+              inner / largest,
+              1e-10);
+  check(title.str() + ": W / (factor x classical) under pure dilatation",
+        energy / (stiffness_factor * classical),
+        1.,
+        1e-10);
 }
 
 int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    check_user_model<2>();
-    check_user_model<3>();
+    check_user_model<2>(1.);
+    check_user_model<2>(2.5);
+    check_user_model<3>(1.);
   });
 }

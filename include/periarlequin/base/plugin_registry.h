@@ -2,6 +2,7 @@
 #define periarlequin_base_plugin_registry_h
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <functional>
 #include <map>
@@ -14,26 +15,66 @@ namespace PeriArlequin
 
   /**
    * An open registry of the implementations of an interface, by name, in ASPECT's manner: a
-   * plugin registers a factory from a static initialiser in its own source file (see the
-   * REGISTER macros of each interface), and the parameter that selects it is a
-   * Patterns::Selection of names(). Each interface's header declares its registry as an
-   * extern template and the library instantiates it, so the library and user code share one
-   * registry.
+   * plugin registers a factory, and optionally the declaration of its own parameters, from a
+   * static initialiser in its own source file (see the REGISTER macros of each interface);
+   * the parameter that selects it is a Patterns::Selection of names(). A plugin's parameters
+   * live in a subsection named after it, which declare_parameters() declares for every
+   * registered plugin (so --print-parameters shows them all), and create() with a
+   * ParameterHandler hands to the instance's parse_parameters(). Each interface's header
+   * declares its registry as an extern template and the library instantiates it, so the
+   * library and user code share one registry.
    */
   template <typename Interface, typename... Arguments>
   class PluginRegistry
   {
   public:
     using Creator = std::function<std::unique_ptr<Interface>(Arguments...)>;
+    using Declare = std::function<void(ParameterHandler &)>;
 
-    /** Add a plugin; a name registered twice is an error. Returns true (for initialisers). */
+    /**
+     * Add a plugin, with the declaration of its parameters if it has any; a name registered
+     * twice is an error. Returns true (for static initialisers).
+     */
     static bool
-    register_plugin(const std::string &name, const std::string &description, Creator creator)
+    register_plugin(const std::string &name,
+                    const std::string &description,
+                    Creator            creator,
+                    Declare            declare = Declare())
     {
       AssertThrow(plugins().count(name) == 0,
                   ExcMessage("A plugin named '" + name + "' is registered twice."));
-      plugins()[name] = {description, std::move(creator)};
+      plugins()[name] = {description, std::move(creator), std::move(declare)};
       return true;
+    }
+
+    /** Each plugin's parameters, in a subsection of its name inside the current one. */
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      for (const auto &[name, entry] : plugins())
+        if (entry.declare)
+          {
+            prm.enter_subsection(name);
+            entry.declare(prm);
+            prm.leave_subsection();
+          }
+    }
+
+    /**
+     * A new instance of the plugin @p name, constructed from @p arguments, that has read its
+     * parameters from its subsection (inside the current subsection of @p prm).
+     */
+    static std::unique_ptr<Interface>
+    create(const std::string &name, ParameterHandler &prm, Arguments... arguments)
+    {
+      auto instance = create(name, arguments...);
+      if (plugins().at(name).declare)
+        {
+          prm.enter_subsection(name);
+          instance->parse_parameters(prm);
+          prm.leave_subsection();
+        }
+      return instance;
     }
 
     /** A new instance of the plugin @p name, constructed from @p arguments. */
@@ -72,6 +113,7 @@ namespace PeriArlequin
     {
       std::string description;
       Creator     creator;
+      Declare     declare;
     };
 
     static std::map<std::string, Entry> &

@@ -61,7 +61,7 @@ namespace PeriArlequin
     void
     set_slave_velocities() override;
     std::pair<double, double>
-    constraint_residuals() override;
+    constraint_residuals() const override;
     types::global_dof_index
     n_multipliers() const override;
     std::pair<types::global_dof_index, types::global_dof_index>
@@ -80,7 +80,7 @@ namespace PeriArlequin
   private:
     /** g = H^T (N x - y) for an FE field @p x and PD field @p y at the overlap nodes. */
     void
-    constraint(const VectorType &x, const std::vector<Tensor<1, dim>> &y, VectorType &g);
+    constraint(const VectorType &x, const std::vector<Tensor<1, dim>> &y, VectorType &g) const;
 
     const Parameters::Coupling parameters;
     const MultiplierMesh       mesh;
@@ -99,7 +99,8 @@ namespace PeriArlequin
     std::vector<double>                        pd_inverse_mass;
 
     VectorType                                 lambda, rhs, fe_scratch;
-    typename InterpolationOperator<dim>::Values overlap_values;
+    /** Scratch values at the overlap's PD nodes. */
+    mutable typename InterpolationOperator<dim>::Values overlap_values;
   };
 } // namespace PeriArlequin
 

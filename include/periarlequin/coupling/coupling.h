@@ -22,13 +22,18 @@ namespace PeriArlequin
    * blending profile it needs before the zones exist, and is initialised once they do.
    *
    * Users add a coupling by deriving from this class and registering it with
-   * PERIARLEQUIN_REGISTER_COUPLING in their own source file.
+   * PERIARLEQUIN_REGISTER_COUPLING in their own source file; its own parameters (declared by
+   * its static declare_parameters()) live in "Coupling/<name>".
    */
   template <int dim>
   class Coupling
   {
   public:
     virtual ~Coupling() = default;
+
+    /** Read the parameters declared by the class's static declare_parameters(). */
+    virtual void
+    parse_parameters(ParameterHandler &prm);
 
     /**
      * The shape of alpha across the overlap. With a linear profile the FE mass and
@@ -66,7 +71,7 @@ namespace PeriArlequin
 
     /** |g| [m] and |g_dot| [m/s] of the constraint (l2 over all rows); 0 without one. */
     virtual std::pair<double, double>
-    constraint_residuals() = 0;
+    constraint_residuals() const = 0;
 
     /** Number of multipliers (over all ranks and components). */
     virtual types::global_dof_index
@@ -106,22 +111,28 @@ namespace PeriArlequin
 
 /**
  * Register a coupling class template (instantiated for dim = 2 and 3, constructed from the
- * Parameters::Coupling) under @p name, e.g.
- * PERIARLEQUIN_REGISTER_COUPLING(MyCoupling, "mine", "what it does").
+ * Parameters::Coupling) with a static declare_parameters(ParameterHandler &) under @p name,
+ * e.g. PERIARLEQUIN_REGISTER_COUPLING(MyCoupling, "mine", "what it does").
  */
 #define PERIARLEQUIN_REGISTER_COUPLING(classname, name, description)                        \
   namespace                                                                                  \
   {                                                                                          \
     const bool periarlequin_registered_coupling_##classname##_2d =                           \
       PeriArlequin::CouplingRegistry<2>::register_plugin(                                    \
-        name, description, [](const PeriArlequin::Parameters::Coupling &parameters) {        \
+        name,                                                                                \
+        description,                                                                         \
+        [](const PeriArlequin::Parameters::Coupling &parameters) {                           \
           return std::unique_ptr<PeriArlequin::Coupling<2>>(new classname<2>(parameters));   \
-        });                                                                                  \
+        },                                                                                   \
+        &classname<2>::declare_parameters);                                                  \
     const bool periarlequin_registered_coupling_##classname##_3d =                           \
       PeriArlequin::CouplingRegistry<3>::register_plugin(                                    \
-        name, description, [](const PeriArlequin::Parameters::Coupling &parameters) {        \
+        name,                                                                                \
+        description,                                                                         \
+        [](const PeriArlequin::Parameters::Coupling &parameters) {                           \
           return std::unique_ptr<PeriArlequin::Coupling<3>>(new classname<3>(parameters));   \
-        });                                                                                  \
+        },                                                                                   \
+        &classname<3>::declare_parameters);                                                  \
   }
 
 #endif

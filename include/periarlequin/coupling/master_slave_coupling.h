@@ -45,7 +45,7 @@ namespace PeriArlequin
     set_slave_velocities() override;
     /** No constraint: zeros. */
     std::pair<double, double>
-    constraint_residuals() override;
+    constraint_residuals() const override;
     types::global_dof_index
     n_multipliers() const override;
     std::pair<types::global_dof_index, types::global_dof_index>

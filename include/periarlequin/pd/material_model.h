@@ -1,13 +1,13 @@
 #ifndef periarlequin_pd_material_model_h
 #define periarlequin_pd_material_model_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
 #include <periarlequin/base/parameters.h>
+#include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/pd/bond_families.h>
 
-#include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,13 +25,18 @@ namespace PeriArlequin
    *
    * Users add a model by deriving from this class and registering it with
    * PERIARLEQUIN_REGISTER_PD_MATERIAL in their own source file; the parameter
-   * "Peridynamics/Material model" then accepts its name.
+   * "Peridynamics/Material model" then accepts its name, and the model's own parameters
+   * (declared by its static declare_parameters()) live in "Peridynamics/<name>".
    */
   template <int dim>
   class PDMaterialModel
   {
   public:
     virtual ~PDMaterialModel() = default;
+
+    /** Read the parameters declared by the class's static declare_parameters(). */
+    virtual void
+    parse_parameters(ParameterHandler &prm);
 
     /** Material constants; called once the bond families and weighted volumes exist. */
     virtual void
@@ -73,34 +78,10 @@ namespace PeriArlequin
 
   /** The open registry of PD material models, by name. */
   template <int dim>
-  class PDMaterialRegistry
-  {
-  public:
-    using Creator = std::function<std::unique_ptr<PDMaterialModel<dim>>()>;
+  using PDMaterialRegistry = PluginRegistry<PDMaterialModel<dim>>;
 
-    static bool
-    register_model(const std::string &name, const std::string &description, Creator creator);
-
-    static std::unique_ptr<PDMaterialModel<dim>>
-    create(const std::string &name);
-
-    /** "A|B|..." for a Patterns::Selection. */
-    static std::string
-    names();
-
-    /** One line per model: name and description. */
-    static std::string
-    documentation();
-
-  private:
-    struct Entry
-    {
-      std::string description;
-      Creator     creator;
-    };
-    static std::map<std::string, Entry> &
-    models();
-  };
+  extern template class PluginRegistry<PDMaterialModel<2>>;
+  extern template class PluginRegistry<PDMaterialModel<3>>;
 
   /**
    * The state-based linear peridynamic solid (LPS) in 3D and in 2D plane stress and plane
@@ -155,20 +136,29 @@ namespace PeriArlequin
 } // namespace PeriArlequin
 
 /**
- * Register a PD material model class template (instantiated for dim = 2 and 3) under @p name,
- * e.g. PERIARLEQUIN_REGISTER_PD_MATERIAL(MyBondBasedModel, "PMB", "prototype micro-elastic").
+ * Register a PD material model class template (instantiated for dim = 2 and 3, default
+ * constructed) with a static declare_parameters(ParameterHandler &) under @p name, e.g.
+ * PERIARLEQUIN_REGISTER_PD_MATERIAL(MyBondBasedModel, "PMB", "prototype micro-elastic").
  */
 #define PERIARLEQUIN_REGISTER_PD_MATERIAL(classname, name, description)                      \
   namespace                                                                                  \
   {                                                                                          \
-    const bool periarlequin_registered_##classname##_2d =                                    \
-      PeriArlequin::PDMaterialRegistry<2>::register_model(name, description, [] {            \
-        return std::unique_ptr<PeriArlequin::PDMaterialModel<2>>(new classname<2>());        \
-      });                                                                                    \
-    const bool periarlequin_registered_##classname##_3d =                                    \
-      PeriArlequin::PDMaterialRegistry<3>::register_model(name, description, [] {            \
-        return std::unique_ptr<PeriArlequin::PDMaterialModel<3>>(new classname<3>());        \
-      });                                                                                    \
+    const bool periarlequin_registered_material_##classname##_2d =                           \
+      PeriArlequin::PDMaterialRegistry<2>::register_plugin(                                  \
+        name,                                                                                \
+        description,                                                                         \
+        [] {                                                                                 \
+          return std::unique_ptr<PeriArlequin::PDMaterialModel<2>>(new classname<2>());      \
+        },                                                                                   \
+        &classname<2>::declare_parameters);                                                  \
+    const bool periarlequin_registered_material_##classname##_3d =                           \
+      PeriArlequin::PDMaterialRegistry<3>::register_plugin(                                  \
+        name,                                                                                \
+        description,                                                                         \
+        [] {                                                                                 \
+          return std::unique_ptr<PeriArlequin::PDMaterialModel<3>>(new classname<3>());      \
+        },                                                                                   \
+        &classname<3>::declare_parameters);                                                  \
   }
 
 #endif

@@ -88,13 +88,15 @@ namespace PeriArlequin
     using WeightFunction = std::function<double(const Point<dim> &)>;
 
     /**
-     * A zone whose particles fill Peridynamics/Region, or, for a coupled run, the sites that
-     * @p extent accepts (the PD region, the overlap and a layer of slaves beyond it).
+     * A zone of the material @p model whose particles fill Peridynamics/Region, or, for a
+     * coupled run, the sites that @p extent accepts (the PD region, the overlap and a layer
+     * of slaves beyond it).
      */
     PDZone(parallel::distributed::Triangulation<dim> &triangulation,
            const Parameters::Peridynamics<dim>       &parameters,
            const Parameters::Material                &material,
            const Parameters::Geometry                &geometry,
+           std::unique_ptr<PDMaterialModel<dim>>      model,
            const SiteFilter                          &extent = SiteFilter());
 
     /**

@@ -1,0 +1,110 @@
+#ifndef periarlequin_postprocess_postprocessor_h
+#define periarlequin_postprocess_postprocessor_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <periarlequin/base/plugin_registry.h>
+#include <periarlequin/io/energy_history.h>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  template <int dim>
+  class Simulator;
+
+  /**
+   * A diagnostic of the running simulation: at every recorded step (Output/Energy interval)
+   * it adds named columns to the history, written as the energy CSV. Selected by name in
+   * Output/Postprocessors; each one may declare its own parameters in the subsection
+   * "Postprocess/<name>".
+   *
+   * Users add a postprocessor by deriving from this class and registering it with
+   * PERIARLEQUIN_REGISTER_POSTPROCESSOR in their own source file.
+   */
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    virtual ~Postprocessor() = default;
+
+    /** Read the parameters declared by the class's static declare_parameters(). */
+    virtual void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Add this step's values to @p history (EnergyHistory::add_value), on every rank. */
+    virtual void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) = 0;
+  };
+
+  /** The registry of postprocessors. */
+  template <int dim>
+  using PostprocessorRegistry = PluginRegistry<Postprocessor<dim>>;
+
+  extern template class PluginRegistry<Postprocessor<2>>;
+  extern template class PluginRegistry<Postprocessor<3>>;
+
+  /**
+   * Energies of the whole model [J]: kinetic and strain energy, the work of loads and support
+   * reactions, the total (kinetic + strain - work, conserved without dissipation), the same
+   * per zone, and the broken bonds (counted from both ends).
+   */
+  template <int dim>
+  class EnergyPostprocessor : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
+
+  /**
+   * Kinetic and strain energy [J] of the PD particles in Output/Monitor region (the pure PD
+   * zone of the coupled runs): what a coupling leaves behind when a wave should have left.
+   */
+  template <int dim>
+  class MonitorRegionEnergies : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
+
+  /**
+   * The coupling constraint: |g| [m], |g_dot| [m/s] and the CG iterations of the last
+   * multiplier solve (zeros for an uncoupled case).
+   */
+  template <int dim>
+  class ConstraintResiduals : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
+} // namespace PeriArlequin
+
+/**
+ * Register a postprocessor class template (instantiated for dim = 2 and 3, default
+ * constructed) with a static declare_parameters(ParameterHandler &) under @p name.
+ */
+#define PERIARLEQUIN_REGISTER_POSTPROCESSOR(classname, name, description)                    \
+  namespace                                                                                  \
+  {                                                                                          \
+    const bool periarlequin_registered_postprocessor_##classname##_2d =                      \
+      PeriArlequin::PostprocessorRegistry<2>::register_plugin(                               \
+        name,                                                                                \
+        description,                                                                         \
+        [] {                                                                                 \
+          return std::unique_ptr<PeriArlequin::Postprocessor<2>>(new classname<2>());        \
+        },                                                                                   \
+        &classname<2>::declare_parameters);                                                  \
+    const bool periarlequin_registered_postprocessor_##classname##_3d =                      \
+      PeriArlequin::PostprocessorRegistry<3>::register_plugin(                               \
+        name,                                                                                \
+        description,                                                                         \
+        [] {                                                                                 \
+          return std::unique_ptr<PeriArlequin::Postprocessor<3>>(new classname<3>());        \
+        },                                                                                   \
+        &classname<3>::declare_parameters);                                                  \
+  }
+
+#endif
