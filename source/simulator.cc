@@ -99,7 +99,8 @@ namespace PeriArlequin
       {
         const auto [a, b] =
           parse_segment<dim>(output_parameters.sample_line, "Output/Sample line");
-        sample_segment = {a, b};
+        line_samples = std::make_unique<LineSamples<dim>>(
+          a, b, output_parameters, pd_parameters.lattice_spacing, communicator);
       }
   }
 
@@ -267,6 +268,8 @@ namespace PeriArlequin
       communicator);
     if (fe_zone)
       fe_output = std::make_unique<FEOutput<dim>>(*fe_zone, output_parameters);
+    if (pd_zone)
+      pd_output = std::make_unique<PDOutput<dim>>(*pd_zone, output_parameters);
   }
 
   template <int dim>
@@ -315,90 +318,10 @@ namespace PeriArlequin
     TimerOutput::Scope scope(timer, "output");
     if (fe_output)
       fe_output->write(get_step_number(), get_time(), get_displacement(), get_velocity());
-    if (pd_zone)
-      pd_zone->write_output(
-        get_step_number(), get_time(), output_parameters.directory, output_parameters.base_name);
-    if (!sample_segment.empty())
-      write_line_samples();
-  }
-
-  template <int dim>
-  void
-  Simulator<dim>::write_line_samples()
-  {
-    const Point<dim>     a = sample_segment[0];
-    const Tensor<1, dim> e = sample_segment[1] - a;
-    const auto distance = [&](const Point<dim> &x) {
-      const double s = std::clamp((x - a) * e / (e * e), 0., 1.);
-      return (x - (a + s * e)).norm();
-    };
-    // Rows: zone (0 FE, 1 PD), position, displacement.
-    std::vector<double> rows;
-    const auto add_row = [&](const double zone, const Point<dim> &x, const Tensor<1, dim> &u) {
-      rows.push_back(zone);
-      for (unsigned int d = 0; d < dim; ++d)
-        rows.push_back(x[d]);
-      for (unsigned int d = 0; d < dim; ++d)
-        rows.push_back(u[d]);
-    };
-    if (fe_zone)
-      {
-        std::vector<unsigned int> dofs, components;
-        std::vector<Point<dim>>   points;
-        fe_zone->support_points(dofs, points, components);
-        const double tolerance = 1e-9 * e.norm();
-        std::map<std::vector<double>, Tensor<1, dim>> nodes;
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          if (distance(points[k]) <= tolerance)
-            nodes[std::vector<double>(points[k].begin_raw(), points[k].end_raw())]
-                 [components[k]] = get_displacement().local_element(dofs[k]);
-        for (const auto &[x, u] : nodes)
-          {
-            Point<dim> p;
-            for (unsigned int d = 0; d < dim; ++d)
-              p[d] = x[d];
-            add_row(0, p, u);
-          }
-      }
-    if (pd_zone)
-      for (unsigned int i = 0; i < pd_zone->n_owned; ++i)
-        if (distance(pd_zone->reference_position[i]) <=
-            0.5 * pd_parameters.lattice_spacing * (1. + 1e-9))
-          add_row(1, pd_zone->reference_position[i], pd_zone->displacement[i]);
-
-    const auto all = Utilities::MPI::gather(communicator, rows, 0);
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
-    const unsigned int                      width = 1 + 2 * dim;
-    std::vector<std::vector<double>>        sorted;
-    for (const auto &part : all)
-      for (unsigned int r = 0; r + width <= part.size(); r += width)
-        sorted.emplace_back(part.begin() + r, part.begin() + r + width);
-    // by zone, then position: the same file whatever the partition
-    std::sort(sorted.begin(), sorted.end(), [](const auto &a, const auto &b) {
-      return std::lexicographical_compare(a.begin(),
-                                          a.begin() + 1 + dim,
-                                          b.begin(),
-                                          b.begin() + 1 + dim);
-    });
-    std::ostringstream name;
-    name << output_parameters.directory << "/" << output_parameters.base_name << "_line_"
-         << std::setw(6) << std::setfill('0') << get_step_number() << ".csv";
-    std::ofstream out(name.str());
-    const char *axes[] = {"x", "y", "z"};
-    out << "zone";
-    for (unsigned int d = 0; d < dim; ++d)
-      out << "," << axes[d];
-    for (unsigned int d = 0; d < dim; ++d)
-      out << ",u_" << axes[d];
-    out << "\n" << std::setprecision(12);
-    for (const auto &row : sorted)
-      {
-        out << (row[0] == 0 ? "fe" : "pd");
-        for (unsigned int k = 1; k < width; ++k)
-          out << "," << row[k];
-        out << "\n";
-      }
+    if (pd_output)
+      pd_output->write(get_step_number(), get_time());
+    if (line_samples)
+      line_samples->write(get_step_number(), fe_zone.get(), pd_zone.get());
   }
 
   template <int dim>

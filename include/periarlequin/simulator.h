@@ -14,6 +14,8 @@
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
+#include <periarlequin/io/line_samples.h>
+#include <periarlequin/io/pd_output.h>
 #include <periarlequin/pd/pd_zone.h>
 #include <periarlequin/postprocess/postprocessor.h>
 #include <periarlequin/time/predictor_corrector.h>
@@ -121,9 +123,6 @@ namespace PeriArlequin
     kinetic_energy() const;
     void
     write_output();
-    /** Displacements on Output/Sample line, gathered into one CSV on rank 0. */
-    void
-    write_line_samples();
     void
     report_progress(const bool force);
 
@@ -140,9 +139,10 @@ namespace PeriArlequin
     Parameters::Peridynamics<dim> pd_parameters;
     Parameters::Coupling         coupling_parameters;
     ProblemData<dim>             problem_data;
-    /** Where the pure-PD energies are measured; the sample segment (empty: none). */
-    Region<dim>                  monitor_region;
-    std::vector<Point<dim>>      sample_segment;
+    /** Where the pure-PD energies are measured. */
+    Region<dim>                       monitor_region;
+    /** Output/Sample line, or nullptr. */
+    std::unique_ptr<LineSamples<dim>> line_samples;
 
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FEZone<dim>>              fe_zone;
@@ -150,6 +150,7 @@ namespace PeriArlequin
     std::unique_ptr<BlendingField<dim>>       blending;
     std::unique_ptr<Coupling<dim>>            coupling;
     std::unique_ptr<FEOutput<dim>>            fe_output;
+    std::unique_ptr<PDOutput<dim>>            pd_output;
     std::unique_ptr<PDMaterialModel<dim>>     pd_material;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;

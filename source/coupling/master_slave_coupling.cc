@@ -125,24 +125,10 @@ namespace PeriArlequin
   template class MasterSlaveCoupling<2>;
   template class MasterSlaveCoupling<3>;
 
-  namespace
-  {
-    // No parameters of its own: registered without a declaration.
-    template <int dim>
-    bool
-    register_master_slave_coupling()
-    {
-      return CouplingRegistry<dim>::register_plugin(
-        "bad",
-        "The paper's fig. 8: PD nodes of the FE-side half of the overlap follow the FE field, "
-        "FE nodes of the PD-side half follow the PD field; no multipliers (the baseline that "
-        "reflects).",
-        [](const Parameters::Coupling &parameters) {
-          return std::unique_ptr<Coupling<dim>>(new MasterSlaveCoupling<dim>(parameters));
-        });
-    }
-
-    const bool master_slave_coupling_registered =
-      register_master_slave_coupling<2>() && register_master_slave_coupling<3>();
-  } // namespace
+  PERIARLEQUIN_REGISTER_COUPLING(MasterSlaveCoupling,
+                                 "bad",
+                                 "The paper's fig. 8: PD nodes of the FE-side half of the "
+                                 "overlap follow the FE field, FE nodes of the PD-side half "
+                                 "follow the PD field; no multipliers (the baseline that "
+                                 "reflects).")
 } // namespace PeriArlequin

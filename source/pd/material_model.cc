@@ -175,20 +175,8 @@ namespace PeriArlequin
   template class LinearPeridynamicSolid<2>;
   template class LinearPeridynamicSolid<3>;
 
-  namespace
-  {
-    // The LPS model has no parameters of its own: it reads the common material constants.
-    template <int dim>
-    bool
-    register_linear_peridynamic_solid()
-    {
-      return PDMaterialRegistry<dim>::register_plugin(
-        "LPS",
-        "state-based linear peridynamic solid (3D, 2D plane stress and plane strain)",
-        [] { return std::unique_ptr<PDMaterialModel<dim>>(new LinearPeridynamicSolid<dim>()); });
-    }
-
-    const bool linear_peridynamic_solid_registered =
-      register_linear_peridynamic_solid<2>() && register_linear_peridynamic_solid<3>();
-  } // namespace
+  PERIARLEQUIN_REGISTER_PD_MATERIAL(
+    LinearPeridynamicSolid,
+    "LPS",
+    "state-based linear peridynamic solid (3D, 2D plane stress and plane strain)")
 } // namespace PeriArlequin

@@ -2,141 +2,25 @@
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
-#include <deal.II/particles/data_out.h>
 
 #include <cmath>
 #include <sstream>
 
 namespace PeriArlequin
 {
-  namespace Parameters
+
+  namespace
   {
     template <int dim>
-    double
-    Peridynamics<dim>::horizon() const
+    Point<dim>
+    to_point(const std::vector<double> &coordinates)
     {
-      return horizon_factor * lattice_spacing;
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = coordinates[d];
+      return p;
     }
-
-    template <int dim>
-    void
-    Peridynamics<dim>::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Peridynamics");
-      prm.declare_entry("Region",
-                        "",
-                        Patterns::Anything(),
-                        "Union of boxes filled with PD particles, 'x0, y0 : x1, y1 ; ...' "
-                        "(lower : upper corner) [m]. Empty: no PD zone. Cells whose centre lies "
-                        "in the region carry no FE unknowns.");
-      prm.declare_entry("Lattice spacing",
-                        "0.0025",
-                        Patterns::Double(),
-                        "Spacing dx of the regular particle lattice, > 0 [m]. The lattice is "
-                        "anchored at the lower corner of the domain; a particle sits at every "
-                        "lattice cell centre inside the region.");
-      prm.declare_entry("Horizon factor",
-                        "3.015",
-                        Patterns::Double(),
-                        "m = delta / dx, the horizon in lattice spacings, >= 1 [-].");
-      prm.declare_entry("Material model",
-                        "LPS",
-                        Patterns::Selection(PDMaterialRegistry<dim>::names()),
-                        "The PD material model, by its registered name:" +
-                          PDMaterialRegistry<dim>::documentation() +
-                          "\nA model's own parameters are in the subsection of its name.");
-      PDMaterialRegistry<dim>::declare_parameters(prm);
-      prm.declare_entry("Fracture",
-                        "false",
-                        Patterns::Bool(),
-                        "Break bonds irreversibly above the critical stretch.");
-      prm.declare_entry("Critical energy release rate",
-                        "0",
-                        Patterns::Double(),
-                        "G0 [J/m^2], > 0 when Fracture is on; gives the critical stretch "
-                        "through the material model's formula.");
-      prm.declare_entry("Critical stretch",
-                        "0",
-                        Patterns::Double(0),
-                        "If > 0, the critical bond stretch [-] itself, overriding G0.");
-      prm.declare_entry("Pre-cracks",
-                        "",
-                        Patterns::Anything(),
-                        "Cracks that cut bonds at the start, separated by ';': segments "
-                        "'x0, y0 : x1, y1' in 2D, parallelograms 'corner : edge a : edge b' "
-                        "in 3D [m].");
-      prm.declare_entry("No-fail region",
-                        "",
-                        Patterns::Anything(),
-                        "Boxes 'lower : upper ; ...' [m] in which bonds never break (a bond "
-                        "with either end inside).");
-      for (unsigned int r = 0; r < n_prescribed_regions; ++r)
-        {
-          prm.enter_subsection("Prescribed region " + std::to_string(r));
-          prm.declare_entry("Region",
-                            "",
-                            Patterns::Anything(),
-                            "Boxes 'lower : upper ; ...' [m] whose particles have a prescribed "
-                            "motion (a fictitious boundary layer). Empty: unused.");
-          prm.declare_entry("Type",
-                            "displacement",
-                            Patterns::Selection("displacement|velocity"),
-                            "Whether Function gives the displacement [m] or the velocity [m/s].");
-          declare_component_selection<dim>(prm, "Prescribed components.");
-          declare_vector_function<dim>(prm,
-                                       "Function",
-                                       "Prescribed displacement [m] or velocity [m/s].");
-          prm.leave_subsection();
-        }
-      prm.leave_subsection();
-    }
-
-    template <int dim>
-    void
-    Peridynamics<dim>::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Peridynamics");
-      region              = Region<dim>::parse(prm.get("Region"), "Peridynamics/Region");
-      lattice_spacing     = prm.get_double("Lattice spacing");
-      horizon_factor      = prm.get_double("Horizon factor");
-      material_model      = prm.get("Material model");
-      fracture            = prm.get_bool("Fracture");
-      energy_release_rate = prm.get_double("Critical energy release rate");
-      critical_stretch    = prm.get_double("Critical stretch");
-      pre_cracks = PreCrack<dim>::parse_list(prm.get("Pre-cracks"), "Peridynamics/Pre-cracks");
-      no_fail_region =
-        Region<dim>::parse(prm.get("No-fail region"), "Peridynamics/No-fail region");
-      for (unsigned int r = 0; r < n_prescribed_regions; ++r)
-        {
-          const std::string path = "Peridynamics/Prescribed region " + std::to_string(r) + "/";
-          prm.enter_subsection("Prescribed region " + std::to_string(r));
-          auto &p               = prescribed[r];
-          p.region              = Region<dim>::parse(prm.get("Region"), path + "Region");
-          p.prescribes_velocity = prm.get("Type") == "velocity";
-          p.components          = parse_component_selection<dim>(prm);
-          p.function   = std::make_unique<Functions::ParsedFunction<dim>>(dim);
-          parse_vector_function(prm, path, "Function", *p.function);
-          prm.leave_subsection();
-        }
-      prm.leave_subsection();
-
-      if (region.empty())
-        return;
-      if (!(lattice_spacing > 0))
-        throw_invalid_parameter("Peridynamics/Lattice spacing",
-                                lattice_spacing,
-                                "a value > 0 [m]");
-      if (!(horizon_factor >= 1))
-        throw_invalid_parameter("Peridynamics/Horizon factor",
-                                horizon_factor,
-                                "a value >= 1 (the horizon spans at least one lattice spacing)");
-      if (fracture && critical_stretch == 0 && !(energy_release_rate > 0))
-        throw_invalid_parameter("Peridynamics/Critical energy release rate",
-                                energy_release_rate,
-                                "a value > 0 [J/m^2] when Fracture = true (or set 'Critical "
-                                "stretch' > 0)");
-    }
-  } // namespace Parameters
+  } // namespace
 
   template <int dim>
   PDZone<dim>::PDZone(parallel::distributed::Triangulation<dim> &triangulation,
@@ -155,14 +39,11 @@ namespace PeriArlequin
         return this->parameters.region.contains(x);
       }))
     , blending_weight([](const Point<dim> &) { return 0.; })
+    , lattice(to_point<dim>(geometry.lower_corner),
+              to_point<dim>(geometry.upper_corner),
+              parameters.lattice_spacing)
   {
     const double dx = parameters.lattice_spacing;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lattice_origin[d] = geometry.lower_corner[d];
-        n_sites[d]        = static_cast<unsigned int>(
-          std::floor((geometry.upper_corner[d] - geometry.lower_corner[d]) / dx + 1e-8));
-      }
     Box<dim> domain;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -182,68 +63,8 @@ namespace PeriArlequin
     bonds.build_stencil(dx, parameters.horizon());
   }
 
-  template <int dim>
-  Point<dim>
-  PDZone<dim>::site_position(const std::array<unsigned int, dim> &site) const
-  {
-    Point<dim> p;
-    for (unsigned int d = 0; d < dim; ++d)
-      p[d] = lattice_origin[d] + (site[d] + 0.5) * parameters.lattice_spacing;
-    return p;
-  }
-
-  template <int dim>
-  types::particle_index
-  PDZone<dim>::site_id(const std::array<unsigned int, dim> &site) const
-  {
-    types::particle_index id = 0;
-    for (int d = dim - 1; d >= 0; --d)
-      id = id * n_sites[d] + site[d];
-    return id;
-  }
-
   namespace
   {
-    /**
-     * Lattice sites whose centres lie in [lower, upper) of an axis-aligned cell: the
-     * half-open rule gives every site to exactly one cell.
-     */
-    template <int dim>
-    std::array<std::pair<unsigned int, unsigned int>, dim>
-    site_range(const Point<dim>                     &lower,
-               const Point<dim>                     &upper,
-               const Point<dim>                     &origin,
-               const double                          dx,
-               const std::array<unsigned int, dim> &n_sites)
-    {
-      std::array<std::pair<unsigned int, unsigned int>, dim> range;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double first = std::ceil((lower[d] - origin[d]) / dx - 0.5);
-          const double end   = std::ceil((upper[d] - origin[d]) / dx - 0.5);
-          range[d] = {static_cast<unsigned int>(std::max(first, 0.)),
-                      static_cast<unsigned int>(
-                        std::min(std::max(end, 0.), static_cast<double>(n_sites[d])))};
-        }
-      return range;
-    }
-
-    /** Visit every site of a range. */
-    template <int dim, typename Visitor>
-    void
-    for_each_site(const std::array<std::pair<unsigned int, unsigned int>, dim> &range,
-                  const Visitor                                                  &visit)
-    {
-      std::array<unsigned int, dim> site;
-      const auto                    loop = [&](const auto &self, const unsigned int d) -> void {
-        if (d == dim)
-          return visit(site);
-        for (site[d] = range[d].first; site[d] < range[d].second; ++site[d])
-          self(self, d + 1);
-      };
-      loop(loop, 0);
-    }
-
     template <int dim>
     std::pair<Point<dim>, Point<dim>>
     cell_bounds(const typename Triangulation<dim>::cell_iterator &cell)
@@ -258,9 +79,9 @@ namespace PeriArlequin
   {
     const auto [lower, upper] = cell_bounds<dim>(cell);
     unsigned int n            = 0;
-    for_each_site<dim>(
-      site_range<dim>(lower, upper, lattice_origin, parameters.lattice_spacing, n_sites),
-      [&](const auto &site) { n += extent(site_position(site)); });
+    lattice.for_each_site_in(lower, upper, [&](const auto &site) {
+      n += extent(lattice.position(site));
+    });
     return 1000 + n * bonds.stencil.size();
   }
 
@@ -338,23 +159,17 @@ namespace PeriArlequin
   {
     const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
     particle_handler.initialize(triangulation, mapping, n_properties);
-    const double dx = parameters.lattice_spacing;
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
           continue;
         const auto [lower, upper] = cell_bounds<dim>(cell);
-        for_each_site<dim>(site_range<dim>(lower, upper, lattice_origin, dx, n_sites),
-                           [&](const auto &site) {
-                             const Point<dim> x = site_position(site);
-                             if (!extent(x))
-                               return;
-                             particle_handler.insert_particle(
-                               x,
-                               mapping.transform_real_to_unit_cell(cell, x),
-                               site_id(site),
-                               cell);
-                           });
+        lattice.for_each_site_in(lower, upper, [&](const auto &site) {
+          const Point<dim> x = lattice.position(site);
+          if (extent(x))
+            particle_handler.insert_particle(
+              x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
+        });
       }
     particle_handler.update_cached_numbers();
     AssertThrow(particle_handler.n_global_particles() > 0,
@@ -421,30 +236,17 @@ namespace PeriArlequin
 
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        std::array<unsigned int, dim> site;
-        types::particle_index         id = particle_id[i];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            site[d] = id % n_sites[d];
-            id /= n_sites[d];
-          }
+        const auto site = lattice.site(particle_id[i]);
         bonds.begin_family();
         for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
           {
-            std::array<unsigned int, dim> other;
-            bool                          inside = true;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const long s = static_cast<long>(site[d]) + bonds.stencil[k].offset[d];
-                inside       = inside && s >= 0 && s < static_cast<long>(n_sites[d]);
-                other[d]     = static_cast<unsigned int>(s);
-              }
-            if (!inside)
+            const auto other = lattice.neighbour(site, bonds.stencil[k].offset);
+            if (!other)
               continue;
-            const auto found = local_index.find(site_id(other));
+            const auto found = local_index.find(lattice.id(*other));
             if (found == local_index.end())
               {
-                AssertThrow(!extent(site_position(other)),
+                AssertThrow(!extent(lattice.position(*other)),
                             ExcMessage("A neighbour within the horizon is neither owned nor a "
                                        "ghost particle: the ghost layer does not cover the "
                                        "horizon."));
@@ -910,34 +712,12 @@ namespace PeriArlequin
   std::vector<std::pair<unsigned int, double>>
   PDZone<dim>::lattice_interpolation(const Point<dim> &x) const
   {
-    // Sites sit at cell centres of the lattice: the 2^dim around x and their weights.
-    const double                  dx = parameters.lattice_spacing;
-    std::array<long, dim>         base;
-    std::array<double, dim>       fraction;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double s = (x[d] - lattice_origin[d]) / dx - 0.5;
-        base[d]        = static_cast<long>(std::floor(s));
-        fraction[d]    = s - base[d];
-      }
+    // The lattice weights, renormalised over the sites that hold a particle here.
     std::vector<std::pair<unsigned int, double>> weights;
     double                                       total = 0;
-    for (unsigned int corner = 0; corner < (1u << dim); ++corner)
+    for (const auto &[id, w] : lattice.interpolation_weights(x))
       {
-        std::array<unsigned int, dim> site;
-        double                        w      = 1;
-        bool                          inside = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const bool upper = corner & (1u << d);
-            const long s     = base[d] + upper;
-            inside           = inside && s >= 0 && s < static_cast<long>(n_sites[d]);
-            site[d]          = static_cast<unsigned int>(std::max(s, 0l));
-            w *= upper ? fraction[d] : 1. - fraction[d];
-          }
-        if (!inside || w == 0)
-          continue;
-        const auto found = local_index_of_id.find(site_id(site));
+        const auto found = local_index_of_id.find(id);
         if (found == local_index_of_id.end())
           continue;
         weights.emplace_back(found->second, w);
@@ -951,11 +731,8 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  PDZone<dim>::write_output(const unsigned int step,
-                            const double       time,
-                            const std::string &directory,
-                            const std::string &base_name)
+  std::vector<std::string>
+  PDZone<dim>::store_output_properties()
   {
     const unsigned int        n_scalars = model->n_particle_scalars();
     const std::vector<double> damage    = bonds.damage();
@@ -978,27 +755,16 @@ namespace PeriArlequin
     names.push_back("damage");
     for (const auto &name : model->particle_scalar_names())
       names.push_back(name);
-    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      2 * dim, DataComponentInterpretation::component_is_part_of_vector);
-    interpretation.insert(interpretation.end(),
-                          1 + n_scalars,
-                          DataComponentInterpretation::component_is_scalar);
+    return names;
+  }
 
-    Particles::DataOut<dim> data_out;
-    data_out.build_patches(particle_handler, names, interpretation);
-    const std::string name = data_out.write_vtu_with_pvtu_record(
-      directory + "/", base_name + "_pd", step, communicator, 6);
-    if (!output_series)
-      output_series =
-        std::make_unique<PVDSeries>(directory + "/" + base_name + "_pd.pvd", communicator);
-    output_series->add(time, name);
+  template <int dim>
+  const Particles::ParticleHandler<dim> &
+  PDZone<dim>::get_particle_handler() const
+  {
+    return particle_handler;
   }
 
   template class PDZone<2>;
   template class PDZone<3>;
-  namespace Parameters
-  {
-    template struct Peridynamics<2>;
-    template struct Peridynamics<3>;
-  } // namespace Parameters
 } // namespace PeriArlequin

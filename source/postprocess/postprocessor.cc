@@ -64,28 +64,16 @@ namespace PeriArlequin
   template class PluginRegistry<Postprocessor<2>>;
   template class PluginRegistry<Postprocessor<3>>;
 
-  namespace
-  {
-    template <int dim>
-    bool
-    register_built_in_postprocessors()
-    {
-      using Registry = PostprocessorRegistry<dim>;
-      return Registry::register_plugin(
-               "energies",
-               "kinetic, strain and total energy, external work, per zone; broken bonds",
-               [] { return std::unique_ptr<Postprocessor<dim>>(new EnergyPostprocessor<dim>()); }) &&
-             Registry::register_plugin(
-               "monitor region energies",
-               "kinetic and strain energy of the PD particles in Output/Monitor region",
-               [] { return std::unique_ptr<Postprocessor<dim>>(new MonitorRegionEnergies<dim>()); }) &&
-             Registry::register_plugin(
-               "constraint residuals",
-               "|g|, |g_dot| of the coupling constraint and the multiplier CG iterations",
-               [] { return std::unique_ptr<Postprocessor<dim>>(new ConstraintResiduals<dim>()); });
-    }
-
-    const bool built_in_postprocessors_registered =
-      register_built_in_postprocessors<2>() && register_built_in_postprocessors<3>();
-  } // namespace
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(
+    EnergyPostprocessor,
+    "energies",
+    "kinetic, strain and total energy, external work, per zone; broken bonds")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(
+    MonitorRegionEnergies,
+    "monitor region energies",
+    "kinetic and strain energy of the PD particles in Output/Monitor region")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(
+    ConstraintResiduals,
+    "constraint residuals",
+    "|g|, |g_dot| of the coupling constraint and the multiplier CG iterations")
 } // namespace PeriArlequin

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace PeriArlequin
 {
@@ -123,6 +124,42 @@ namespace PeriArlequin
       return registered;
     }
   };
+
+  /** Does the plugin class @p Plugin declare parameters (a static declare_parameters)? */
+  template <typename Plugin, typename = void>
+  struct declares_parameters : std::false_type
+  {};
+
+  template <typename Plugin>
+  struct declares_parameters<Plugin, std::void_t<decltype(&Plugin::declare_parameters)>>
+    : std::true_type
+  {};
+
+  /**
+   * Register the class template @p Plugin, derived from @p Interface<dim> and constructed
+   * from the registry's @p Arguments, in the registries of dim = 2 and 3 under @p name, with
+   * its static declare_parameters() if it has one. What the REGISTER macros call.
+   */
+  template <template <int> class Interface, template <int> class Plugin, typename... Arguments>
+  bool
+  register_plugin_template(const std::string &name, const std::string &description)
+  {
+    const auto add = [&](auto dimension) {
+      constexpr int dim = decltype(dimension)::value;
+      using Registry    = PluginRegistry<Interface<dim>, Arguments...>;
+      typename Registry::Declare declare;
+      if constexpr (declares_parameters<Plugin<dim>>::value)
+        declare = &Plugin<dim>::declare_parameters;
+      return Registry::register_plugin(
+        name,
+        description,
+        [](Arguments... arguments) {
+          return std::unique_ptr<Interface<dim>>(new Plugin<dim>(arguments...));
+        },
+        declare);
+    };
+    return add(std::integral_constant<int, 2>()) && add(std::integral_constant<int, 3>());
+  }
 } // namespace PeriArlequin
 
 #endif

@@ -111,28 +111,18 @@ namespace PeriArlequin
 
 /**
  * Register a coupling class template (instantiated for dim = 2 and 3, constructed from the
- * Parameters::Coupling) with a static declare_parameters(ParameterHandler &) under @p name,
+ * Parameters::Coupling; with its static declare_parameters(ParameterHandler &) if it has one)
+ * under @p name,
  * e.g. PERIARLEQUIN_REGISTER_COUPLING(MyCoupling, "mine", "what it does").
  */
 #define PERIARLEQUIN_REGISTER_COUPLING(classname, name, description)                        \
   namespace                                                                                  \
   {                                                                                          \
-    const bool periarlequin_registered_coupling_##classname##_2d =                           \
-      PeriArlequin::CouplingRegistry<2>::register_plugin(                                    \
-        name,                                                                                \
-        description,                                                                         \
-        [](const PeriArlequin::Parameters::Coupling &parameters) {                           \
-          return std::unique_ptr<PeriArlequin::Coupling<2>>(new classname<2>(parameters));   \
-        },                                                                                   \
-        &classname<2>::declare_parameters);                                                  \
-    const bool periarlequin_registered_coupling_##classname##_3d =                           \
-      PeriArlequin::CouplingRegistry<3>::register_plugin(                                    \
-        name,                                                                                \
-        description,                                                                         \
-        [](const PeriArlequin::Parameters::Coupling &parameters) {                           \
-          return std::unique_ptr<PeriArlequin::Coupling<3>>(new classname<3>(parameters));   \
-        },                                                                                   \
-        &classname<3>::declare_parameters);                                                  \
+    const bool periarlequin_registered_coupling_##classname =                                \
+      PeriArlequin::register_plugin_template<PeriArlequin::Coupling,                         \
+                                             classname,                                      \
+                                             const PeriArlequin::Parameters::Coupling &>(    \
+        name, description);                                                                  \
   }
 
 #endif

@@ -137,28 +137,16 @@ namespace PeriArlequin
 
 /**
  * Register a PD material model class template (instantiated for dim = 2 and 3, default
- * constructed) with a static declare_parameters(ParameterHandler &) under @p name, e.g.
+ * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
+ * @p name, e.g.
  * PERIARLEQUIN_REGISTER_PD_MATERIAL(MyBondBasedModel, "PMB", "prototype micro-elastic").
  */
 #define PERIARLEQUIN_REGISTER_PD_MATERIAL(classname, name, description)                      \
   namespace                                                                                  \
   {                                                                                          \
-    const bool periarlequin_registered_material_##classname##_2d =                           \
-      PeriArlequin::PDMaterialRegistry<2>::register_plugin(                                  \
-        name,                                                                                \
-        description,                                                                         \
-        [] {                                                                                 \
-          return std::unique_ptr<PeriArlequin::PDMaterialModel<2>>(new classname<2>());      \
-        },                                                                                   \
-        &classname<2>::declare_parameters);                                                  \
-    const bool periarlequin_registered_material_##classname##_3d =                           \
-      PeriArlequin::PDMaterialRegistry<3>::register_plugin(                                  \
-        name,                                                                                \
-        description,                                                                         \
-        [] {                                                                                 \
-          return std::unique_ptr<PeriArlequin::PDMaterialModel<3>>(new classname<3>());      \
-        },                                                                                   \
-        &classname<3>::declare_parameters);                                                  \
+    const bool periarlequin_registered_material_##classname =                                \
+      PeriArlequin::register_plugin_template<PeriArlequin::PDMaterialModel, classname>(      \
+        name, description);                                                                  \
   }
 
 #endif

@@ -11,8 +11,9 @@
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/base/regions.h>
-#include <periarlequin/io/pvd_series.h>
 #include <periarlequin/pd/bond_families.h>
+#include <periarlequin/pd/lattice.h>
+#include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/material_model.h>
 #include <periarlequin/time/integrated_zone.h>
 
@@ -26,44 +27,6 @@ namespace PeriArlequin
 {
   using namespace dealii;
 
-  namespace Parameters
-  {
-    /** A particle region whose displacement or velocity is prescribed. */
-    template <int dim>
-    struct PrescribedParticleRegion
-    {
-      Region<dim>                                     region;
-      bool                                            prescribes_velocity = false;
-      ComponentMask                                   components;
-      std::unique_ptr<Functions::ParsedFunction<dim>> function;
-    };
-
-    /** The peridynamic zone: where, how fine, which model, fracture, particle conditions. */
-    template <int dim>
-    struct Peridynamics
-    {
-      static constexpr unsigned int n_prescribed_regions = 4;
-
-      Region<dim>                 region;
-      double                      lattice_spacing;
-      double                      horizon_factor;
-      std::string                 material_model;
-      bool                        fracture;
-      double                      energy_release_rate;
-      double                      critical_stretch;
-      std::vector<PreCrack<dim>>  pre_cracks;
-      Region<dim>                 no_fail_region;
-      std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
-
-      double
-      horizon() const;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-  } // namespace Parameters
 
   /**
    * The peridynamic particle zone: a regular lattice of spacing dx filling a union of boxes,
@@ -183,9 +146,15 @@ namespace PeriArlequin
     MPI_Comm
     get_communicator() const;
 
-    void
-    write_output(const unsigned int step, const double time, const std::string &directory,
-                 const std::string &base_name);
+    /**
+     * Copy displacement, velocity, damage and the model's particle scalars into the owned
+     * particles' properties, for output; returns their names, component by component.
+     */
+    std::vector<std::string>
+    store_output_properties();
+
+    const Particles::ParticleHandler<dim> &
+    get_particle_handler() const;
 
     /** Flat state, owned particles [0, n_owned) then ghosts. */
     unsigned int n_owned = 0;
@@ -244,12 +213,6 @@ namespace PeriArlequin
     void
     restore_prescribed_velocities();
 
-    /** Lattice index of a point (per direction) and the particle id of a lattice site. */
-    types::particle_index
-    site_id(const std::array<unsigned int, dim> &site) const;
-    Point<dim>
-    site_position(const std::array<unsigned int, dim> &site) const;
-
     parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Peridynamics<dim>       &parameters;
     const Parameters::Material                 material;
@@ -267,8 +230,7 @@ namespace PeriArlequin
     std::vector<double>                        state_weight, force_weight, mass_weight;
     std::unordered_map<types::particle_index, unsigned int> local_index_of_id;
 
-    Point<dim>                   lattice_origin;
-    std::array<unsigned int, dim> n_sites;
+    Lattice<dim>                 lattice;
     double                       critical_stretch = 0;
     double                       time_step        = 0;
 
@@ -285,7 +247,6 @@ namespace PeriArlequin
     double                          work        = 0;
     bool                            tracks_work = false;
     std::vector<double>             exchange_buffer;
-    std::unique_ptr<PVDSeries>      output_series;
   };
 } // namespace PeriArlequin
 

@@ -84,27 +84,15 @@ namespace PeriArlequin
 
 /**
  * Register a postprocessor class template (instantiated for dim = 2 and 3, default
- * constructed) with a static declare_parameters(ParameterHandler &) under @p name.
+ * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
+ * @p name.
  */
 #define PERIARLEQUIN_REGISTER_POSTPROCESSOR(classname, name, description)                    \
   namespace                                                                                  \
   {                                                                                          \
-    const bool periarlequin_registered_postprocessor_##classname##_2d =                      \
-      PeriArlequin::PostprocessorRegistry<2>::register_plugin(                               \
-        name,                                                                                \
-        description,                                                                         \
-        [] {                                                                                 \
-          return std::unique_ptr<PeriArlequin::Postprocessor<2>>(new classname<2>());        \
-        },                                                                                   \
-        &classname<2>::declare_parameters);                                                  \
-    const bool periarlequin_registered_postprocessor_##classname##_3d =                      \
-      PeriArlequin::PostprocessorRegistry<3>::register_plugin(                               \
-        name,                                                                                \
-        description,                                                                         \
-        [] {                                                                                 \
-          return std::unique_ptr<PeriArlequin::Postprocessor<3>>(new classname<3>());        \
-        },                                                                                   \
-        &classname<3>::declare_parameters);                                                  \
+    const bool periarlequin_registered_postprocessor_##classname =                           \
+      PeriArlequin::register_plugin_template<PeriArlequin::Postprocessor, classname>(        \
+        name, description);                                                                  \
   }
 
 #endif

@@ -1,0 +1,60 @@
+#ifndef periarlequin_pd_pd_parameters_h
+#define periarlequin_pd_pd_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/fe/component_mask.h>
+
+#include <periarlequin/base/problem_data.h>
+#include <periarlequin/base/regions.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    /** A particle region whose displacement or velocity is prescribed. */
+    template <int dim>
+    struct PrescribedParticleRegion
+    {
+      Region<dim>                                     region;
+      bool                                            prescribes_velocity = false;
+      ComponentMask                                   components;
+      std::unique_ptr<Functions::ParsedFunction<dim>> function;
+    };
+
+    /** The peridynamic zone: where, how fine, which model, fracture, particle conditions. */
+    template <int dim>
+    struct Peridynamics
+    {
+      static constexpr unsigned int n_prescribed_regions = 4;
+
+      Region<dim>                 region;
+      double                      lattice_spacing;
+      double                      horizon_factor;
+      std::string                 material_model;
+      bool                        fracture;
+      double                      energy_release_rate;
+      double                      critical_stretch;
+      std::vector<PreCrack<dim>>  pre_cracks;
+      Region<dim>                 no_fail_region;
+      std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
+
+      double
+      horizon() const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace PeriArlequin
+
+#endif
