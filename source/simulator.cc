@@ -65,6 +65,9 @@ namespace PeriArlequin
       {
         prm.enter_subsection("Peridynamics");
         pd_material = PDMaterialRegistry<dim>::create(pd_parameters.material_model, prm);
+        if (pd_parameters.fracture)
+          fracture_criterion =
+            FractureCriterionRegistry<dim>::create(pd_parameters.fracture_criterion, prm);
         prm.leave_subsection();
       }
     prm.enter_subsection("Postprocess");
@@ -135,7 +138,13 @@ namespace PeriArlequin
             };
           }
         pd_zone = std::make_unique<PDZone<dim>>(
-          triangulation, pd_parameters, material, geometry, std::move(pd_material), extent);
+          triangulation,
+          pd_parameters,
+          material,
+          geometry,
+          std::move(pd_material),
+          std::move(fracture_criterion),
+          extent);
         if (blending)
           pd_zone->set_blending([this](const Point<dim> &x) { return blending->value(x); },
                                 coupling_parameters.blending == Parameters::Blending::energy,

@@ -152,6 +152,7 @@ namespace PeriArlequin
     std::unique_ptr<FEOutput<dim>>            fe_output;
     std::unique_ptr<PDOutput<dim>>            pd_output;
     std::unique_ptr<PDMaterialModel<dim>>     pd_material;
+    std::unique_ptr<FractureCriterion<dim>>   fracture_criterion;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;

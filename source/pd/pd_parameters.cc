@@ -1,3 +1,4 @@
+#include <periarlequin/pd/fracture_criterion.h>
 #include <periarlequin/pd/material_model.h>
 #include <periarlequin/pd/pd_parameters.h>
 
@@ -43,7 +44,14 @@ namespace PeriArlequin
       prm.declare_entry("Fracture",
                         "false",
                         Patterns::Bool(),
-                        "Break bonds irreversibly above the critical stretch.");
+                        "Break bonds irreversibly, as the fracture criterion says.");
+      prm.declare_entry("Fracture criterion",
+                        "critical stretch",
+                        Patterns::Selection(FractureCriterionRegistry<dim>::names()),
+                        "When a bond breaks, by registered name:" +
+                          FractureCriterionRegistry<dim>::documentation() +
+                          "\nA criterion's own parameters are in the subsection of its name.");
+      FractureCriterionRegistry<dim>::declare_parameters(prm);
       prm.declare_entry("Critical energy release rate",
                         "0",
                         Patterns::Double(),
@@ -95,6 +103,7 @@ namespace PeriArlequin
       horizon_factor      = prm.get_double("Horizon factor");
       material_model      = prm.get("Material model");
       fracture            = prm.get_bool("Fracture");
+      fracture_criterion  = prm.get("Fracture criterion");
       energy_release_rate = prm.get_double("Critical energy release rate");
       critical_stretch    = prm.get_double("Critical stretch");
       pre_cracks = PreCrack<dim>::parse_list(prm.get("Pre-cracks"), "Peridynamics/Pre-cracks");
@@ -124,11 +133,6 @@ namespace PeriArlequin
         throw_invalid_parameter("Peridynamics/Horizon factor",
                                 horizon_factor,
                                 "a value >= 1 (the horizon spans at least one lattice spacing)");
-      if (fracture && critical_stretch == 0 && !(energy_release_rate > 0))
-        throw_invalid_parameter("Peridynamics/Critical energy release rate",
-                                energy_release_rate,
-                                "a value > 0 [J/m^2] when Fracture = true (or set 'Critical "
-                                "stretch' > 0)");
     }
   } // namespace Parameters
   namespace Parameters

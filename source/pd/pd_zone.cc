@@ -28,6 +28,7 @@ namespace PeriArlequin
                       const Parameters::Material                &material,
                       const Parameters::Geometry                &geometry,
                       std::unique_ptr<PDMaterialModel<dim>>      model,
+                      std::unique_ptr<FractureCriterion<dim>>    fracture,
                       const SiteFilter                          &extent)
     : triangulation(triangulation)
     , parameters(parameters)
@@ -35,6 +36,7 @@ namespace PeriArlequin
     , communicator(triangulation.get_communicator())
     , mapping(1)
     , model(std::move(model))
+    , fracture(std::move(fracture))
     , extent(extent ? extent : SiteFilter([this](const Point<dim> &x) {
         return this->parameters.region.contains(x);
       }))
@@ -103,12 +105,8 @@ namespace PeriArlequin
     compute_blending_weights();
     build_bonds();
     model->initialize(material, bonds);
-    critical_stretch =
-      parameters.critical_stretch > 0 ?
-        parameters.critical_stretch :
-        (parameters.fracture ?
-           model->critical_stretch(parameters.energy_release_rate, parameters.horizon()) :
-           0.);
+    if (fracture)
+      fracture->initialize(parameters, *model);
 
     const unsigned int n_total = reference_position.size();
     displacement.assign(n_total, Tensor<1, dim>());
@@ -319,26 +317,6 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::break_bonds()
-  {
-    // Both ranks holding a bond to a ghost compute bit-identical extensions, so the bond
-    // breaks in the same step on both.
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          if (bonds.state[n] != BondFamilies<dim>::intact)
-            continue;
-          const auto  &bond = bonds.stencil[bonds.stencil_index[n]];
-          const double e =
-            BondFamilies<dim>::extension(bond, displacement[bonds.neighbor[n]] - displacement[i])
-              .first;
-          if (e > critical_stretch * bond.length)
-            bonds.state[n] = BondFamilies<dim>::broken;
-        }
-  }
-
-  template <int dim>
-  void
   PDZone<dim>::compute_internal_forces()
   {
     update_ghost_displacements();
@@ -418,8 +396,8 @@ namespace PeriArlequin
   {
     const ProblemData<dim> &data = *problem_data;
     update_ghost_displacements();
-    if (parameters.fracture)
-      break_bonds();
+    if (fracture)
+      fracture->break_bonds(bonds, displacement);
     model->compute_particle_scalars(bonds, displacement, model_scalars);
     if (model->n_particle_scalars() > 0)
       update_ghosts(model_scalars, model->n_particle_scalars());
@@ -630,7 +608,7 @@ namespace PeriArlequin
   double
   PDZone<dim>::get_critical_stretch() const
   {
-    return critical_stretch;
+    return fracture ? fracture->critical_stretch() : 0.;
   }
 
   template <int dim>

@@ -40,6 +40,8 @@ namespace PeriArlequin
       double                      horizon_factor;
       std::string                 material_model;
       bool                        fracture;
+      /** The registered fracture criterion used when fracture is on. */
+      std::string                 fracture_criterion;
       double                      energy_release_rate;
       double                      critical_stretch;
       std::vector<PreCrack<dim>>  pre_cracks;

@@ -12,6 +12,7 @@
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/base/regions.h>
 #include <periarlequin/pd/bond_families.h>
+#include <periarlequin/pd/fracture_criterion.h>
 #include <periarlequin/pd/lattice.h>
 #include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/material_model.h>
@@ -53,13 +54,14 @@ namespace PeriArlequin
     /**
      * A zone of the material @p model whose particles fill Peridynamics/Region, or, for a
      * coupled run, the sites that @p extent accepts (the PD region, the overlap and a layer
-     * of slaves beyond it).
+     * of slaves beyond it). Bonds break as @p fracture says (nullptr: never).
      */
     PDZone(parallel::distributed::Triangulation<dim> &triangulation,
            const Parameters::Peridynamics<dim>       &parameters,
            const Parameters::Material                &material,
            const Parameters::Geometry                &geometry,
            std::unique_ptr<PDMaterialModel<dim>>      model,
+           std::unique_ptr<FractureCriterion<dim>>    fracture,
            const SiteFilter                          &extent = SiteFilter());
 
     /**
@@ -141,6 +143,7 @@ namespace PeriArlequin
     /** Broken bonds counted from both ends. */
     std::size_t
     n_global_broken_bonds() const;
+    /** The fracture criterion's critical stretch (0 without fracture). */
     double
     get_critical_stretch() const;
     MPI_Comm
@@ -209,8 +212,6 @@ namespace PeriArlequin
     void
     compute_blending_weights();
     void
-    break_bonds();
-    void
     restore_prescribed_velocities();
 
     parallel::distributed::Triangulation<dim> &triangulation;
@@ -220,6 +221,7 @@ namespace PeriArlequin
     MappingQ<dim>                              mapping;
     Particles::ParticleHandler<dim>            particle_handler;
     std::unique_ptr<PDMaterialModel<dim>>      model;
+    std::unique_ptr<FractureCriterion<dim>>    fracture;
     SiteFilter                                 extent;
     WeightFunction                             blending_weight;
     bool                                       energy_blending     = false;
@@ -231,7 +233,7 @@ namespace PeriArlequin
     std::unordered_map<types::particle_index, unsigned int> local_index_of_id;
 
     Lattice<dim>                 lattice;
-    double                       critical_stretch = 0;
+
     double                       time_step        = 0;
 
     struct PrescribedParticle
