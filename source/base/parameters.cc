@@ -98,7 +98,7 @@ namespace PeriArlequin
       prm.declare_entry("Density", "2700", Patterns::Double(), "Mass density rho [kg/m^3].");
       prm.declare_entry("Two-dimensional model",
                         "plane stress",
-                        Patterns::Selection("plane stress|plane strain"),
+                        selection_pattern(planar_model_names),
                         "How a 2D run treats the third direction. Ignored in 3D.");
       prm.leave_subsection();
     }
@@ -110,9 +110,7 @@ namespace PeriArlequin
       youngs_modulus = prm.get_double("Young's modulus");
       poissons_ratio = prm.get_double("Poisson's ratio");
       density        = prm.get_double("Density");
-      planar_model   = prm.get("Two-dimensional model") == "plane stress" ?
-                         PlanarModel::plane_stress :
-                         PlanarModel::plane_strain;
+      planar_model = selection_value(prm.get("Two-dimensional model"), planar_model_names);
       prm.leave_subsection();
 
       if (!(youngs_modulus > 0))

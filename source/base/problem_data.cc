@@ -141,7 +141,7 @@ namespace PeriArlequin
         prm.enter_subsection("Boundary " + std::to_string(b));
         prm.declare_entry("Type",
                           "free",
-                          Patterns::Selection("free|displacement|traction"),
+                          selection_pattern(boundary_type_names),
                           "Condition on boundary id " + std::to_string(b) +
                             " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
                             "traction), displacement (prescribed components) or traction.");
@@ -176,10 +176,7 @@ namespace PeriArlequin
         const std::string name = "Boundary " + std::to_string(b);
         prm.enter_subsection(name);
         BoundaryCondition<dim> &condition = boundary_conditions[b];
-        const std::string       type      = prm.get("Type");
-        condition.type = type == "free"         ? BoundaryType::free :
-                         type == "displacement" ? BoundaryType::displacement :
-                                                  BoundaryType::traction;
+        condition.type = selection_value(prm.get("Type"), boundary_type_names);
         condition.components = parse_component_selection<dim>(prm);
         if (condition.type == BoundaryType::displacement && condition.components.n_selected_components() == 0)
           throw_invalid_parameter("Boundary conditions/" + name + "/Components",

@@ -34,7 +34,7 @@ namespace PeriArlequin
                         "region, the overlap and this region must cover the domain.");
       prm.declare_entry("Blending",
                         "energy",
-                        Patterns::Selection("paper|energy|force"),
+                        selection_pattern(blending_names),
                         "Where alpha enters the forces: paper (FE weight inside the stiffness "
                         "integral, PD force weighted per node, eq. 47b and 55), energy (the "
                         "weight inside the sums on both sides, forces from the blended "
@@ -42,7 +42,7 @@ namespace PeriArlequin
                         "(K u)_I).");
       prm.declare_entry("Multiplier solver",
                         "diagonal",
-                        Patterns::Selection("diagonal|cg"),
+                        selection_pattern(multiplier_solver_names),
                         "How A lambda = H^T (N v* - w*) is solved: diagonal (the paper's "
                         "row-sum diagonal of A, eq. 68) or cg (conjugate gradients to a relative "
                         "residual of 1e-12).");
@@ -80,12 +80,9 @@ namespace PeriArlequin
       method              = prm.get("Method");
       overlap_text        = prm.get("Overlap region");
       fe_region_text      = prm.get("Finite element region");
-      const std::string b = prm.get("Blending");
-      blending            = b == "energy" ? Blending::energy :
-                            b == "force"  ? Blending::force :
-                                            Blending::paper;
+      blending            = selection_value(prm.get("Blending"), blending_names);
       multiplier_solver =
-        prm.get("Multiplier solver") == "cg" ? MultiplierSolver::cg : MultiplierSolver::diagonal;
+        selection_value(prm.get("Multiplier solver"), multiplier_solver_names);
       damping               = prm.get_bool("Fine-scale damping");
       damping_constant      = prm.get_double("Damping constant");
       damping_wave_speed    = prm.get_double("Damping wave speed");

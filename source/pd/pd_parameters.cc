@@ -82,7 +82,7 @@ namespace PeriArlequin
                             "motion (a fictitious boundary layer). Empty: unused.");
           prm.declare_entry("Type",
                             "displacement",
-                            Patterns::Selection("displacement|velocity"),
+                            selection_pattern(prescribed_quantity_names),
                             "Whether Function gives the displacement [m] or the velocity [m/s].");
           declare_component_selection<dim>(prm, "Prescribed components.");
           declare_vector_function<dim>(prm,
@@ -115,7 +115,7 @@ namespace PeriArlequin
           prm.enter_subsection("Prescribed region " + std::to_string(r));
           auto &p               = prescribed[r];
           p.region              = Region<dim>::parse(prm.get("Region"), path + "Region");
-          p.prescribes_velocity = prm.get("Type") == "velocity";
+          p.prescribes_velocity = selection_value(prm.get("Type"), prescribed_quantity_names);
           p.components          = parse_component_selection<dim>(prm);
           p.function   = std::make_unique<Functions::ParsedFunction<dim>>(dim);
           parse_vector_function(prm, path, "Function", *p.function);

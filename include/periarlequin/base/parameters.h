@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -29,6 +30,37 @@ namespace PeriArlequin
                           const double       value,
                           const std::string &allowed);
 
+  /**
+   * The values of an enumeration with the names a parameter file gives them: one table per
+   * enumeration declares the entry's pattern (selection_pattern) and converts what was read
+   * (selection_value), so names and values cannot drift apart.
+   */
+  template <typename Enum>
+  using SelectionNames = std::vector<std::pair<std::string, Enum>>;
+
+  /** Patterns::Selection of the names of @p names. */
+  template <typename Enum>
+  Patterns::Selection
+  selection_pattern(const SelectionNames<Enum> &names)
+  {
+    std::string list;
+    for (const auto &[name, value] : names)
+      list += (list.empty() ? "" : "|") + name;
+    return Patterns::Selection(list);
+  }
+
+  /** The value named @p name in @p names (the entry's pattern has checked the name). */
+  template <typename Enum>
+  Enum
+  selection_value(const std::string &name, const SelectionNames<Enum> &names)
+  {
+    for (const auto &[candidate, value] : names)
+      if (candidate == name)
+        return value;
+    AssertThrow(false, ExcMessage("'" + name + "' is not a name of the selection."));
+    return names.front().second;
+  }
+
   namespace Parameters
   {
     /** A box domain meshed by a subdivided hyper-rectangle. */
@@ -51,6 +83,10 @@ namespace PeriArlequin
       plane_stress,
       plane_strain
     };
+
+    inline const SelectionNames<PlanarModel> planar_model_names = {
+      {"plane stress", PlanarModel::plane_stress},
+      {"plane strain", PlanarModel::plane_strain}};
 
     /** Isotropic linear elastic material shared by the FE and PD zones. */
     struct Material

@@ -51,6 +51,11 @@ namespace PeriArlequin
     traction
   };
 
+  inline const SelectionNames<BoundaryType> boundary_type_names = {
+    {"free", BoundaryType::free},
+    {"displacement", BoundaryType::displacement},
+    {"traction", BoundaryType::traction}};
+
   /**
    * Condition on one boundary id: a prescribed displacement on the selected components, or a
    * traction vector, both muparser expressions of (x, y[, z], t).

@@ -35,6 +35,10 @@ namespace PeriArlequin
       force
     };
 
+    inline const SelectionNames<Blending> blending_names = {{"paper", Blending::paper},
+                                                            {"energy", Blending::energy},
+                                                            {"force", Blending::force}};
+
     enum class MultiplierSolver
     {
       /** The paper's row-sum diagonal of A (eq. 68). */
@@ -42,6 +46,10 @@ namespace PeriArlequin
       /** Conjugate gradients on A, to a relative residual of 1e-12. */
       cg
     };
+
+    inline const SelectionNames<MultiplierSolver> multiplier_solver_names = {
+      {"diagonal", MultiplierSolver::diagonal},
+      {"cg", MultiplierSolver::cg}};
 
     /** The Arlequin coupling: zones, blending, multipliers, fine-scale damping. */
     struct Coupling

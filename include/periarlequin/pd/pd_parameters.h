@@ -19,6 +19,10 @@ namespace PeriArlequin
 
   namespace Parameters
   {
+    /** Does a prescribed region's Function give the velocity (or the displacement)? */
+    inline const SelectionNames<bool> prescribed_quantity_names = {{"displacement", false},
+                                                                   {"velocity", true}};
+
     /** A particle region whose displacement or velocity is prescribed. */
     template <int dim>
     struct PrescribedParticleRegion
