@@ -15,13 +15,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
-  Lattice<dim>::spacing() const
-  {
-    return dx;
-  }
-
-  template <int dim>
   types::particle_index
   Lattice<dim>::id(const Site &site) const
   {

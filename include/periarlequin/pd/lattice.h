@@ -30,9 +30,6 @@ namespace PeriArlequin
 
     Lattice(const Point<dim> &lower_corner, const Point<dim> &upper_corner, const double spacing);
 
-    double
-    spacing() const;
-
     /** The id of @p site. */
     types::particle_index
     id(const Site &site) const;
