@@ -33,9 +33,9 @@ namespace UserPlugins
     {
       Tensor<1, dim> momentum;
       if (const auto *pd = simulator.get_pd_zone())
-        for (unsigned int i = 0; i < pd->n_owned; ++i)
-          if (!pd->is_slave[i])
-            momentum += pd->particle_mass(i) * pd->velocity[i];
+        for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
+          if (!pd->is_slave(i))
+            momentum += pd->particle_mass(i) * pd->get_state().velocities()[i];
       for (const std::string &component : components)
         {
           const unsigned int d = component[0] - 'x';

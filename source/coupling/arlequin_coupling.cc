@@ -30,8 +30,8 @@ namespace PeriArlequin
     time_step = dt;
     const MPI_Comm communicator = pd.get_communicator();
 
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (!pd.is_slave[i] && pd.alpha[i] > 0)
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (!pd.is_slave(i) && pd.blending_weights()[i] > 0)
         overlap_particles.push_back(i);
     if (Utilities::MPI::sum(overlap_particles.size(), communicator) == 0)
       throw_invalid_parameter("Coupling/Overlap region",
@@ -74,7 +74,7 @@ namespace PeriArlequin
   template <int dim>
   void
   ArlequinCoupling<dim>::constraint(const VectorType                  &x,
-                                    const std::vector<Tensor<1, dim>> &y,
+                                    ArrayView<const Tensor<1, dim>> y,
                                     VectorType                        &g) const
   {
     x.update_ghost_values();
@@ -104,7 +104,7 @@ namespace PeriArlequin
   ArlequinCoupling<dim>::enforce_constraint()
   {
     auto &state = fe_zone->get_state();
-    constraint(state.velocity, pd_zone->velocity, rhs);
+    constraint(state.velocity, pd_zone->get_state().velocities(), rhs);
     solver->solve(lambda, rhs);
 
     // Constraint forces -G lambda = -N^T H lambda on FE, +H lambda on PD.
@@ -121,8 +121,8 @@ namespace PeriArlequin
       {
         const unsigned int   i          = overlap_particles[r];
         const Tensor<1, dim> correction = pd_inverse_mass[r] * overlap_values[r];
-        pd_zone->velocity[i] += dt * correction;
-        pd_zone->acceleration[i] += correction;
+        pd_zone->get_state().velocities()[i] += dt * correction;
+        pd_zone->get_state().accelerations()[i] += correction;
       }
   }
 
@@ -140,9 +140,9 @@ namespace PeriArlequin
     const auto &state = fe_zone->get_state();
     VectorType  g;
     space->initialize_vector(g);
-    constraint(state.displacement, pd_zone->displacement, g);
+    constraint(state.displacement, pd_zone->get_state().displacements(), g);
     const double displacement_residual = g.l2_norm();
-    constraint(state.velocity, pd_zone->velocity, g);
+    constraint(state.velocity, pd_zone->get_state().velocities(), g);
     return {displacement_residual, g.l2_norm()};
   }
 

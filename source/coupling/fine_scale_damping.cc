@@ -21,10 +21,10 @@ namespace PeriArlequin
     double largest = 0;
     for (const unsigned int i : particles)
       {
-        const double alpha = pd_zone.alpha[i];
+        const double alpha = pd_zone.blending_weights()[i];
         const double width = parameters.damping_overlap_width > 0 ?
                                parameters.damping_overlap_width :
-                               blending.overlap_width(pd_zone.reference_position[i]);
+                               blending.overlap_width(pd_zone.reference_positions()[i]);
         coefficient.push_back(
           parameters.damping ? parameters.damping_constant * wave_speed * alpha * alpha / width :
                                0.);
@@ -51,8 +51,8 @@ namespace PeriArlequin
     for (unsigned int r = 0; r < particles.size(); ++r)
       {
         const unsigned int i = particles[r];
-        pd_zone.acceleration[i] -=
-          coefficient[r] * (pd_zone.velocity[i] - overlap.interpolate(fe_velocity, r));
+        pd_zone.get_state().accelerations()[i] -=
+          coefficient[r] * (pd_zone.get_state().velocities()[i] - overlap.interpolate(fe_velocity, r));
       }
   }
 

@@ -33,7 +33,7 @@ namespace PeriArlequin
         if (fe.n_dofs_per_cell() == 0)
           {
             std::ostringstream where;
-            where << pd_zone.reference_position[i];
+            where << pd_zone.reference_positions()[i];
             AssertThrow(false,
                         ExcMessage("The PD particle at " + where.str() +
                                    " is coupled to the FE field but its cell has no FE "

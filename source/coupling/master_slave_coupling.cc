@@ -51,7 +51,7 @@ namespace PeriArlequin
       {
         double value = 0;
         for (const auto &[j, w] : slave.weights)
-          value += w * pd_zone->displacement[j][slave.component];
+          value += w * pd_zone->get_state().displacements()[j][slave.component];
         displacement.local_element(slave.dof) = value;
       }
     slaves.follow_displacements();
@@ -72,12 +72,12 @@ namespace PeriArlequin
   MasterSlaveCoupling<dim>::set_slave_velocities()
   {
     auto &state = fe_zone->get_state();
-    pd_motion.resize(2 * dim * pd_zone->reference_position.size());
-    for (unsigned int i = 0; i < pd_zone->n_owned; ++i)
+    pd_motion.resize(2 * dim * pd_zone->reference_positions().size());
+    for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
         {
-          pd_motion[2 * dim * i + d]       = pd_zone->velocity[i][d];
-          pd_motion[2 * dim * i + dim + d] = pd_zone->acceleration[i][d];
+          pd_motion[2 * dim * i + d]       = pd_zone->get_state().velocities()[i][d];
+          pd_motion[2 * dim * i + dim + d] = pd_zone->get_state().accelerations()[i][d];
         }
     pd_zone->update_ghosts(pd_motion, 2 * dim);
     for (const auto &slave : fe_slaves)

@@ -9,8 +9,8 @@ namespace PeriArlequin
     fe_zone = &fe;
     pd_zone = &pd;
     particles.clear();
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (pd.is_slave[i])
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (pd.is_slave(i))
         particles.push_back(i);
     interpolation.reinit(fe, pd, particles);
     fe.initialize_vector(scratch);
@@ -24,7 +24,7 @@ namespace PeriArlequin
     const VectorType &u = fe_zone->get_state().displacement;
     u.update_ghost_values();
     for (unsigned int r = 0; r < particles.size(); ++r)
-      pd_zone->displacement[particles[r]] = interpolation.interpolate(u, r);
+      pd_zone->get_state().displacements()[particles[r]] = interpolation.interpolate(u, r);
   }
 
   template <int dim>
@@ -36,8 +36,8 @@ namespace PeriArlequin
     state.acceleration.update_ghost_values();
     for (unsigned int r = 0; r < particles.size(); ++r)
       {
-        pd_zone->velocity[particles[r]]     = interpolation.interpolate(state.velocity, r);
-        pd_zone->acceleration[particles[r]] = interpolation.interpolate(state.acceleration, r);
+        pd_zone->get_state().velocities()[particles[r]]     = interpolation.interpolate(state.velocity, r);
+        pd_zone->get_state().accelerations()[particles[r]] = interpolation.interpolate(state.acceleration, r);
       }
   }
 

@@ -61,10 +61,10 @@ namespace PeriArlequin
           }
       }
     if (pd_zone)
-      for (unsigned int i = 0; i < pd_zone->n_owned; ++i)
-        if (distance(pd_zone->reference_position[i]) <=
+      for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
+        if (distance(pd_zone->reference_positions()[i]) <=
             0.5 * lattice_spacing * (1. + 1e-9))
-          add_row(1, pd_zone->reference_position[i], pd_zone->displacement[i]);
+          add_row(1, pd_zone->reference_positions()[i], pd_zone->get_state().displacements()[i]);
 
     const auto all = Utilities::MPI::gather(communicator, rows, 0);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)

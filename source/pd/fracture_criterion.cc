@@ -25,7 +25,7 @@ namespace PeriArlequin
   template <int dim>
   void
   CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>                 &bonds,
-                                             const std::vector<Tensor<1, dim>> &u) const
+                                             ArrayView<const Tensor<1, dim>>  u) const
   {
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)

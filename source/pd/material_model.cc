@@ -59,7 +59,7 @@ namespace PeriArlequin
   void
   LinearPeridynamicSolid<dim>::compute_particle_scalars(
     const BondFamilies<dim>          &bonds,
-    const std::vector<Tensor<1, dim>> &u,
+    ArrayView<const Tensor<1, dim>>  u,
     std::vector<double>               &scalars) const
   {
     // Per owned particle: the extension moment sum x e V v and the intact weighted volume
@@ -94,7 +94,7 @@ namespace PeriArlequin
   template <int dim>
   void
   LinearPeridynamicSolid<dim>::compute_forces(const BondFamilies<dim>          &bonds,
-                                              const std::vector<Tensor<1, dim>> &u,
+                                              ArrayView<const Tensor<1, dim>>  u,
                                               const std::vector<double>         &scalars,
                                               const std::vector<double>         &state_weight,
                                               std::vector<Tensor<1, dim>>       &force_density,

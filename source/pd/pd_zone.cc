@@ -3,8 +3,9 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
-#include <cmath>
+#include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace PeriArlequin
 {
@@ -35,8 +36,10 @@ namespace PeriArlequin
     , material(material)
     , communicator(triangulation.get_communicator())
     , mapping(1)
+    , ghosts(particle_handler)
     , model(std::move(model))
     , fracture(std::move(fracture))
+    , prescribed(parameters)
     , extent(extent ? extent : SiteFilter([this](const Point<dim> &x) {
         return this->parameters.region.contains(x);
       }))
@@ -100,48 +103,17 @@ namespace PeriArlequin
   {
     problem_data = &data;
     time_step    = dt;
-    generate_particles();
-    check_horizon_covered();
-    compute_blending_weights();
-    build_bonds();
-    model->initialize(material, bonds);
+    const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
+    particle_handler.initialize(triangulation, mapping, n_properties);
+    insert_particles(extent);
+    AssertThrow(particle_handler.n_global_particles() > 0,
+                ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
+                           "site of spacing 'Peridynamics/Lattice spacing'; allowed: boxes "
+                           "that contain at least one lattice cell centre."));
+    build_particle_structures();
     if (fracture)
       fracture->initialize(parameters, *model);
-
-    const unsigned int n_total = reference_position.size();
-    displacement.assign(n_total, Tensor<1, dim>());
-    velocity.assign(n_owned, Tensor<1, dim>());
-    acceleration.assign(n_owned, Tensor<1, dim>());
-    force_density.assign(n_owned, Tensor<1, dim>());
-    energy_density.assign(n_owned, 0.);
-    model_scalars.assign(n_total * model->n_particle_scalars(), 0.);
-    applied_force.assign(n_owned, Tensor<1, dim>());
-
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
-        if (parameters.prescribed[r].region.contains(reference_position[i]))
-          {
-            prescribed_particles.push_back({i, r, Tensor<1, dim>()});
-            break;
-          }
-
-    auto &u0 = data.initial_displacement;
-    auto &v0 = data.initial_velocity;
-    u0.set_time(0.);
-    v0.set_time(0.);
-    Vector<double> value(dim);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        u0.vector_value(reference_position[i], value);
-        for (unsigned int d = 0; d < dim; ++d)
-          displacement[i][d] = value(d);
-        v0.vector_value(reference_position[i], value);
-        for (unsigned int d = 0; d < dim; ++d)
-          velocity[i][d] = value(d);
-      }
-    work        = 0;
-    tracks_work = Utilities::MPI::logical_or(data.has_body_force || !prescribed_particles.empty(),
-                                             communicator);
+    set_initial_state();
   }
 
   template <int dim>
@@ -153,10 +125,8 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::generate_particles()
+  PDZone<dim>::insert_particles(const SiteFilter &accept)
   {
-    const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
-    particle_handler.initialize(triangulation, mapping, n_properties);
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -164,32 +134,107 @@ namespace PeriArlequin
         const auto [lower, upper] = cell_bounds<dim>(cell);
         lattice.for_each_site_in(lower, upper, [&](const auto &site) {
           const Point<dim> x = lattice.position(site);
-          if (extent(x))
+          if (accept(x))
             particle_handler.insert_particle(
               x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
         });
       }
     particle_handler.update_cached_numbers();
-    AssertThrow(particle_handler.n_global_particles() > 0,
-                ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
-                           "site of spacing 'Peridynamics/Lattice spacing'; allowed: boxes "
-                           "that contain at least one lattice cell centre."));
-    particle_handler.exchange_ghost_particles(true);
+  }
 
-    reference_position.clear();
-    particle_id.clear();
-    for (const auto &particle : particle_handler)
+  template <int dim>
+  void
+  PDZone<dim>::build_particle_structures()
+  {
+    ghosts.reinit();
+    check_horizon_covered();
+    compute_blending_weights();
+    build_bonds();
+    model->initialize(material, bonds);
+
+    const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
+    state.reinit(n_owned, n_total);
+    force_density.assign(n_owned, Tensor<1, dim>());
+    energy_density.assign(n_owned, 0.);
+    model_scalars.assign(n_total * model->n_particle_scalars(), 0.);
+    applied_force.assign(n_owned, Tensor<1, dim>());
+    prescribed.reinit(ghosts.reference_positions(), n_owned);
+    tracks_work = problem_data->has_body_force || !prescribed.empty(communicator);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_initial_state()
+  {
+    auto &u0 = problem_data->initial_displacement;
+    auto &v0 = problem_data->initial_velocity;
+    u0.set_time(0.);
+    v0.set_time(0.);
+    const auto     x = ghosts.reference_positions();
+    const auto     u = state.displacements(), v = state.velocities();
+    Vector<double> value(dim);
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
-        reference_position.push_back(particle.get_location());
-        particle_id.push_back(particle.get_id());
+        u0.vector_value(x[i], value);
+        for (unsigned int d = 0; d < dim; ++d)
+          u[i][d] = value(d);
+        v0.vector_value(x[i], value);
+        for (unsigned int d = 0; d < dim; ++d)
+          v[i][d] = value(d);
       }
-    n_owned = reference_position.size();
-    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost();
-         ++ghost)
+    work = 0;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  PDZone<dim>::extend(const SiteFilter &additional_sites)
+  {
+    // What the rebuild must keep, by particle id: kinematics, applied forces (the next step's
+    // work increment starts from them) and the bonds broken so far.
+    const unsigned int                  n_old = ghosts.n_owned();
+    const auto                          old_ids = ghosts.ids();
+    std::unordered_map<types::particle_index, unsigned int> old_index;
+    for (unsigned int i = 0; i < n_old; ++i)
+      old_index[old_ids[i]] = i;
+    const ParticleState<dim>            old_state = state;
+    const std::vector<Tensor<1, dim>>   old_applied_force = applied_force;
+    std::set<std::pair<types::particle_index, types::particle_index>> broken;
+    for (unsigned int i = 0; i < n_old; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (bonds.state[n] == BondFamilies<dim>::broken)
+          broken.emplace(std::minmax(old_ids[i], old_ids[bonds.neighbor[n]]));
+
+    const SiteFilter old_extent = extent;
+    extent = [old_extent, additional_sites](const Point<dim> &x) {
+      return old_extent(x) || additional_sites(x);
+    };
+    insert_particles(
+      [&](const Point<dim> &x) { return additional_sites(x) && !old_extent(x); });
+    build_particle_structures();
+
+    const auto ids = ghosts.ids();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (broken.count(std::minmax(ids[i], ids[bonds.neighbor[n]])))
+          bonds.state[n] = BondFamilies<dim>::broken;
+
+    std::vector<unsigned int> added;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
-        reference_position.push_back(ghost->get_location());
-        particle_id.push_back(ghost->get_id());
+        const auto found = old_index.find(ids[i]);
+        if (found == old_index.end())
+          {
+            added.push_back(i);
+            continue;
+          }
+        const unsigned int j          = found->second;
+        state.displacements()[i] = old_state.displacements()[j];
+        state.velocities()[i]    = old_state.velocities()[j];
+        state.accelerations()[i] = old_state.accelerations()[j];
+        applied_force[i]         = old_applied_force[j];
       }
+    update_ghost_displacements();
+    return added;
   }
 
   template <int dim>
@@ -225,24 +270,22 @@ namespace PeriArlequin
   void
   PDZone<dim>::build_bonds()
   {
-    auto &local_index = local_index_of_id;
-    local_index.clear();
-    local_index.reserve(particle_id.size());
-    for (unsigned int i = 0; i < particle_id.size(); ++i)
-      local_index[particle_id[i]] = i;
-    bonds.weighted_volume.assign(reference_position.size(), 0.);
+    const unsigned int n_owned = ghosts.n_owned();
+    const auto         x       = ghosts.reference_positions();
+    const auto         ids     = ghosts.ids();
+    bonds.weighted_volume.assign(ghosts.n_total(), 0.);
 
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const auto site = lattice.site(particle_id[i]);
+        const auto site = lattice.site(ids[i]);
         bonds.begin_family();
         for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
           {
             const auto other = lattice.neighbour(site, bonds.stencil[k].offset);
             if (!other)
               continue;
-            const auto found = local_index.find(lattice.id(*other));
-            if (found == local_index.end())
+            const unsigned int j = ghosts.local_index(lattice.id(*other));
+            if (j == numbers::invalid_unsigned_int)
               {
                 AssertThrow(!extent(lattice.position(*other)),
                             ExcMessage("A neighbour within the horizon is neither owned nor a "
@@ -250,7 +293,6 @@ namespace PeriArlequin
                                        "horizon."));
                 continue;
               }
-            const unsigned int j = found->second;
             // The full family gives the weighted volume; a bond between two owned particles
             // is stored only at the lower local index.
             bonds.weighted_volume[i] +=
@@ -259,328 +301,131 @@ namespace PeriArlequin
               continue;
             // Test the crack with the ends in the order of their global ids, so that the
             // ranks holding the two ends decide alike even for a bond grazing a crack tip.
-            const bool         i_first = particle_id[i] < particle_id[j];
-            const Point<dim>  &first   = reference_position[i_first ? i : j];
-            const Point<dim>  &second  = reference_position[i_first ? j : i];
-            auto               state   = BondFamilies<dim>::intact;
+            const bool        i_first = ids[i] < ids[j];
+            const Point<dim> &first   = x[i_first ? i : j];
+            const Point<dim> &second  = x[i_first ? j : i];
+            auto              bond_state = BondFamilies<dim>::intact;
             for (const auto &crack : parameters.pre_cracks)
               if (crack.cuts(first, second))
-                state = BondFamilies<dim>::broken;
-            if (state != BondFamilies<dim>::broken &&
-                (parameters.no_fail_region.contains(reference_position[i]) ||
-                 parameters.no_fail_region.contains(reference_position[j])))
-              state = BondFamilies<dim>::unbreakable;
-            bonds.add_bond(j, k, state);
+                bond_state = BondFamilies<dim>::broken;
+            if (bond_state != BondFamilies<dim>::broken &&
+                (parameters.no_fail_region.contains(x[i]) ||
+                 parameters.no_fail_region.contains(x[j])))
+              bond_state = BondFamilies<dim>::unbreakable;
+            bonds.add_bond(j, k, bond_state);
           }
       }
-    bonds.end_families(n_owned, reference_position.size());
-    update_ghosts(bonds.weighted_volume, 1);
+    bonds.end_families(n_owned, ghosts.n_total());
+    ghosts.update_ghosts(make_array_view(bonds.weighted_volume), 1);
   }
 
   template <int dim>
   void
-  PDZone<dim>::update_ghosts(std::vector<double> &values, const unsigned int n_per_particle)
+  PDZone<dim>::update_ghosts(ArrayView<double> values, const unsigned int n_per_particle)
   {
-    unsigned int i = 0;
-    for (auto &particle : particle_handler)
-      {
-        const ArrayView<double> properties = particle.get_properties();
-        for (unsigned int k = 0; k < n_per_particle; ++k)
-          properties[k] = values[n_per_particle * i + k];
-        ++i;
-      }
-    particle_handler.update_ghost_particles();
-    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost();
-         ++ghost, ++i)
-      {
-        AssertThrow(ghost->get_id() == particle_id[i],
-                    ExcMessage("Ghost particles changed order: rebuild the index maps."));
-        const ArrayView<const double> properties = ghost->get_properties();
-        for (unsigned int k = 0; k < n_per_particle; ++k)
-          values[n_per_particle * i + k] = properties[k];
-      }
+    ghosts.update_ghosts(values, n_per_particle);
   }
 
   template <int dim>
   void
   PDZone<dim>::update_ghost_displacements()
   {
-    exchange_buffer.resize(dim * reference_position.size());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        exchange_buffer[dim * i + d] = displacement[i][d];
-    update_ghosts(exchange_buffer, dim);
-    for (unsigned int i = n_owned; i < reference_position.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        displacement[i][d] = exchange_buffer[dim * i + d];
+    ghosts.update_ghosts(state.displacements());
   }
 
   template <int dim>
   void
-  PDZone<dim>::compute_internal_forces()
+  PDZone<dim>::compute_blending_weights()
   {
-    update_ghost_displacements();
-    model->compute_particle_scalars(bonds, displacement, model_scalars);
-    if (model->n_particle_scalars() > 0)
-      update_ghosts(model_scalars, model->n_particle_scalars());
-    model->compute_forces(
-      bonds, displacement, model_scalars, state_weight, force_density, energy_density);
-  }
-
-  template <int dim>
-  void
-  PDZone<dim>::impose_prescribed_motion(const double time)
-  {
-    const double dt = time_step;
-    Vector<double> before(dim), now(dim), after(dim);
-    for (auto &p : prescribed_particles)
+    // alpha is a function of the reference position: ghosts need no communication.
+    const unsigned int n_total = ghosts.n_total(), n_owned = ghosts.n_owned();
+    const auto         x       = ghosts.reference_positions();
+    alpha.resize(n_total);
+    state_weight.resize(n_total);
+    for (unsigned int i = 0; i < n_total; ++i)
       {
-        const auto &condition = parameters.prescribed[p.region];
-        auto       &function  = *condition.function;
-        const auto &x         = reference_position[p.local_index];
-        function.set_time(time - dt);
-        function.vector_value(x, before);
-        function.set_time(time);
-        function.vector_value(x, now);
-        function.set_time(time + dt);
-        function.vector_value(x, after);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            if (!condition.components[d])
-              continue;
-            if (condition.prescribes_velocity)
-              {
-                p.velocity[d]                  = now(d);
-                acceleration[p.local_index][d] = (after(d) - before(d)) / (2. * dt);
-              }
-            else
-              {
-                displacement[p.local_index][d] = now(d);
-                p.velocity[d]                  = (after(d) - before(d)) / (2. * dt);
-                acceleration[p.local_index][d] = (after(d) - 2. * now(d) + before(d)) / (dt * dt);
-              }
-          }
+        alpha[i]        = blending_weight(x[i]);
+        state_weight[i] = energy_blending ? 1. - alpha[i] : 1.;
       }
-    restore_prescribed_velocities();
-  }
-
-  template <int dim>
-  void
-  PDZone<dim>::restore_prescribed_velocities()
-  {
-    for (const auto &p : prescribed_particles)
-      for (unsigned int d = 0; d < dim; ++d)
-        if (parameters.prescribed[p.region].components[d])
-          velocity[p.local_index][d] = p.velocity[d];
-  }
-
-  template <int dim>
-  void
-  PDZone<dim>::predict(const double dt)
-  {
-    if (tracks_work)
-      {
-        previous_displacement.assign(displacement.begin(), displacement.begin() + n_owned);
-        previous_applied_force = applied_force;
-      }
+    force_weight.resize(n_owned);
+    mass_weight.resize(n_owned);
+    slave.resize(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        displacement[i] += dt * velocity[i] + (0.5 * dt * dt) * acceleration[i];
-        velocity[i] += (0.5 * dt) * acceleration[i];
+        slave[i]        = alpha[i] >= 1.;
+        force_weight[i] = energy_blending ? 1. : 1. - alpha[i];
+        mass_weight[i]  = std::max(1. - alpha[i], minimum_mass_weight);
       }
   }
 
   template <int dim>
-  void
-  PDZone<dim>::compute_accelerations(const double time)
+  unsigned int
+  PDZone<dim>::n_owned_particles() const
   {
-    const ProblemData<dim> &data = *problem_data;
-    update_ghost_displacements();
-    if (fracture)
-      fracture->break_bonds(bonds, displacement);
-    model->compute_particle_scalars(bonds, displacement, model_scalars);
-    if (model->n_particle_scalars() > 0)
-      update_ghosts(model_scalars, model->n_particle_scalars());
-    model->compute_forces(
-      bonds, displacement, model_scalars, state_weight, force_density, energy_density);
-
-    const double   rho = material.density, volume = particle_volume();
-    Vector<double> body(dim);
-    auto          &body_force = data.body_force;
-    body_force.set_time(time);
-    std::vector<Tensor<1, dim>> prescribed_acceleration;
-    for (const auto &p : prescribed_particles)
-      prescribed_acceleration.push_back(acceleration[p.local_index]);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        Tensor<1, dim> b;
-        if (data.has_body_force)
-          {
-            body_force.vector_value(reference_position[i], body);
-            for (unsigned int d = 0; d < dim; ++d)
-              b[d] = body(d);
-          }
-        // A slave's acceleration is that of the FE field, set by the coupling.
-        if (!is_slave[i])
-          acceleration[i] = (force_weight[i] * force_density[i] + (1. - alpha[i]) * b) /
-                            (rho * mass_weight[i]);
-        applied_force[i] = (1. - alpha[i]) * volume * b;
-      }
-    for (unsigned int k = 0; k < prescribed_particles.size(); ++k)
-      {
-        const unsigned int i         = prescribed_particles[k].local_index;
-        const auto        &condition = parameters.prescribed[prescribed_particles[k].region];
-        for (unsigned int d = 0; d < dim; ++d)
-          if (condition.components[d])
-            {
-              acceleration[i][d] = prescribed_acceleration[k][d];
-              // Load plus support reaction: m a - f V.
-              applied_force[i][d] = particle_mass(i) * acceleration[i][d] - blended_force(i)[d];
-            }
-      }
+    return ghosts.n_owned();
   }
 
   template <int dim>
-  void
-  PDZone<dim>::account_work()
+  ArrayView<const Point<dim>>
+  PDZone<dim>::reference_positions() const
   {
-    if (!tracks_work)
-      return;
-    // Trapezoidal work of the applied forces over the step.
-    double increment = 0;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      increment += (previous_applied_force[i] + applied_force[i]) *
-                   (displacement[i] - previous_displacement[i]);
-    work += 0.5 * increment;
+    return ghosts.reference_positions();
   }
 
   template <int dim>
-  void
-  PDZone<dim>::correct(const double dt)
+  ArrayView<const types::particle_index>
+  PDZone<dim>::particle_ids() const
   {
-    for (unsigned int i = 0; i < n_owned; ++i)
-      velocity[i] += (0.5 * dt) * acceleration[i];
-    // Prescribed components keep the velocity computed for this time in
-    // compute_accelerations().
-    restore_prescribed_velocities();
-  }
-
-  namespace
-  {
-    /**
-     * Pseudo-random value in [-1, 1) from a particle id and a component: a start vector for
-     * power iterations with a component on every mode, the same on every partition.
-     */
-    double
-    hashed_value(const types::particle_index id, const unsigned int component)
-    {
-      std::uint64_t h = (id * 3 + component + 1) * 0x9E3779B97F4A7C15ULL;
-      h ^= h >> 31;
-      h *= 0xBF58476D1CE4E5B9ULL;
-      h ^= h >> 29;
-      return static_cast<double>(h >> 11) / static_cast<double>(1ULL << 52) - 1.;
-    }
-  } // namespace
-
-  template <int dim>
-  double
-  PDZone<dim>::estimate_stable_time_step(const unsigned int max_iterations)
-  {
-    const std::vector<Tensor<1, dim>> saved = displacement;
-    std::vector<Tensor<1, dim>>       x(n_owned);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        x[i][d] = hashed_value(particle_id[i], d);
-    const auto norm = [&](const std::vector<Tensor<1, dim>> &v) {
-      double sum = 0;
-      for (unsigned int i = 0; i < n_owned; ++i)
-        sum += v[i] * v[i];
-      return std::sqrt(Utilities::MPI::sum(sum, communicator));
-    };
-    // The operator is applied as -f(eps x) / (rho eps) with eps x far below the lattice
-    // spacing, where the force is linear in the displacement to about 1e-8.
-    double eigenvalue = 0;
-    for (unsigned int it = 0; it < max_iterations; ++it)
-      {
-        const double scale = 1. / norm(x);
-        double       max_entry = 0;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            x[i] *= scale;
-            for (unsigned int d = 0; d < dim; ++d)
-              max_entry = std::max(max_entry, std::abs(x[i][d]));
-          }
-        const double eps = 1e-8 * parameters.lattice_spacing /
-                           Utilities::MPI::max(max_entry, communicator);
-        for (unsigned int i = 0; i < n_owned; ++i)
-          displacement[i] = is_slave[i] ? Tensor<1, dim>() : eps * x[i];
-        compute_internal_forces();
-        double rayleigh = 0;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            const Tensor<1, dim> y =
-              is_slave[i] ? Tensor<1, dim>() :
-                            -(force_weight[i] * force_density[i]) /
-                              (material.density * mass_weight[i] * eps);
-            rayleigh += x[i] * y;
-            x[i] = y;
-          }
-        rayleigh             = Utilities::MPI::sum(rayleigh, communicator);
-        const bool converged = std::abs(rayleigh - eigenvalue) <= 1e-6 * rayleigh;
-        eigenvalue           = rayleigh;
-        if (converged)
-          break;
-      }
-    displacement = saved;
-    compute_internal_forces();
-    AssertThrow(eigenvalue > 0,
-                ExcMessage("The PD stable-step estimate found no positive eigenvalue: does "
-                           "the PD zone have bonds?"));
-    return 2. / std::sqrt(eigenvalue);
+    return ghosts.ids();
   }
 
   template <int dim>
-  double
-  PDZone<dim>::kinetic_energy() const
+  ParticleState<dim> &
+  PDZone<dim>::get_state()
   {
-    double sum = 0;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (!is_slave[i])
-        sum += mass_weight[i] * (velocity[i] * velocity[i]);
-    return 0.5 * material.density * particle_volume() * Utilities::MPI::sum(sum, communicator);
+    return state;
   }
 
   template <int dim>
-  double
-  PDZone<dim>::strain_energy() const
+  const ParticleState<dim> &
+  PDZone<dim>::get_state() const
   {
-    // With energy blending the model weighted the densities already.
-    double sum = 0;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      sum += (energy_blending ? 1. : 1. - alpha[i]) * energy_density[i];
-    return particle_volume() * Utilities::MPI::sum(sum, communicator);
+    return state;
   }
 
   template <int dim>
-  std::pair<double, double>
-  PDZone<dim>::energies_in(const Region<dim> &region) const
+  ArrayView<const Tensor<1, dim>>
+  PDZone<dim>::force_densities() const
   {
-    double sums[2] = {0, 0};
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (region.contains(reference_position[i]))
-        {
-          sums[0] += velocity[i] * velocity[i];
-          sums[1] += energy_density[i];
-        }
-    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
-    return {0.5 * material.density * particle_volume() * sums[0], particle_volume() * sums[1]};
+    return make_array_view(force_density);
   }
 
   template <int dim>
-  double
-  PDZone<dim>::external_work() const
+  ArrayView<const double>
+  PDZone<dim>::energy_densities() const
   {
-    return Utilities::MPI::sum(work, communicator);
+    return make_array_view(energy_density);
+  }
+
+  template <int dim>
+  ArrayView<const double>
+  PDZone<dim>::blending_weights() const
+  {
+    return make_array_view(alpha);
+  }
+
+  template <int dim>
+  bool
+  PDZone<dim>::is_slave(const unsigned int i) const
+  {
+    return slave[i];
+  }
+
+  template <int dim>
+  const BondFamilies<dim> &
+  PDZone<dim>::get_bonds() const
+  {
+    return bonds;
   }
 
   template <int dim>
@@ -651,36 +496,12 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  PDZone<dim>::compute_blending_weights()
-  {
-    // alpha is a function of the reference position: ghosts need no communication.
-    const unsigned int n_total = reference_position.size();
-    alpha.resize(n_total);
-    state_weight.resize(n_total);
-    for (unsigned int i = 0; i < n_total; ++i)
-      {
-        alpha[i]        = blending_weight(reference_position[i]);
-        state_weight[i] = energy_blending ? 1. - alpha[i] : 1.;
-      }
-    force_weight.resize(n_owned);
-    mass_weight.resize(n_owned);
-    is_slave.resize(n_owned);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        is_slave[i]     = alpha[i] >= 1.;
-        force_weight[i] = energy_blending ? 1. : 1. - alpha[i];
-        mass_weight[i]  = std::max(1. - alpha[i], minimum_mass_weight);
-      }
-  }
-
-  template <int dim>
   std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
   PDZone<dim>::owned_particle_locations() const
   {
     std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
       locations;
-    locations.reserve(n_owned);
+    locations.reserve(ghosts.n_owned());
     for (const auto &particle : particle_handler)
       locations.emplace_back(particle.get_surrounding_cell(), particle.get_reference_location());
     return locations;
@@ -695,10 +516,10 @@ namespace PeriArlequin
     double                                       total = 0;
     for (const auto &[id, w] : lattice.interpolation_weights(x))
       {
-        const auto found = local_index_of_id.find(id);
-        if (found == local_index_of_id.end())
+        const unsigned int j = ghosts.local_index(id);
+        if (j == numbers::invalid_unsigned_int)
           continue;
-        weights.emplace_back(found->second, w);
+        weights.emplace_back(j, w);
         total += w;
       }
     AssertThrow(total > 0,
@@ -720,8 +541,8 @@ namespace PeriArlequin
         const ArrayView<double> properties = particle.get_properties();
         for (unsigned int d = 0; d < dim; ++d)
           {
-            properties[d]       = displacement[i][d];
-            properties[dim + d] = velocity[i][d];
+            properties[d]       = state.displacements()[i][d];
+            properties[dim + d] = state.velocities()[i][d];
           }
         properties[2 * dim] = damage[i];
         for (unsigned int k = 0; k < n_scalars; ++k)

@@ -76,8 +76,8 @@ namespace
       }
     // The smallest PD mass of the overlap nodes gives the largest correction per multiplier.
     double smallest_mass = std::numeric_limits<double>::max();
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (pd.alpha[i] > 0 && !pd.is_slave[i])
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (pd.blending_weights()[i] > 0 && !pd.is_slave(i))
         smallest_mass = std::min(smallest_mass, pd.particle_mass(i));
     smallest_mass = Utilities::MPI::min(smallest_mass, MPI_COMM_WORLD);
     report(name + ": v_max [m/s]", v_max);

@@ -222,8 +222,8 @@ namespace PeriArlequinTests
     simulator->run();
     double      a_max = simulator->get_acceleration().linfty_norm();
     const auto &pd    = *simulator->get_pd_zone();
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      a_max = std::max(a_max, pd.acceleration[i].norm());
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      a_max = std::max(a_max, pd.get_state().accelerations()[i].norm());
     a_max = Utilities::MPI::max(a_max, MPI_COMM_WORLD);
     check_below(name + ": max acceleration / a_scale",
                 a_max / (c * c * motion.u_max / (h * h)),

@@ -77,12 +77,12 @@ main(int argc, char **argv)
     const double full_mass = 2700 * 0.005 * 0.005;
     double       pd_error  = 0;
     unsigned int floored   = 0;
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (!pd.is_slave[i])
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (!pd.is_slave(i))
         {
-          const double weight = std::max(1. - pd.alpha[i], 0.1);
+          const double weight = std::max(1. - pd.blending_weights()[i], 0.1);
           pd_error = std::max(pd_error, std::abs(pd.particle_mass(i) / full_mass - weight));
-          floored += (1. - pd.alpha[i] < 0.1);
+          floored += (1. - pd.blending_weights()[i] < 0.1);
         }
     report("PD particles on the mass floor", Utilities::MPI::sum(floored, MPI_COMM_WORLD));
     check_above("PD particles on the mass floor", Utilities::MPI::sum(floored, MPI_COMM_WORLD), 0);

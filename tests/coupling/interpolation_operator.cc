@@ -36,20 +36,20 @@ main(int argc, char **argv)
     const hp::MappingCollection<2> mapping(MappingQ<2>(1));
     Vector<double>                 value(2);
     const auto                     interpolated = [&](const unsigned int i) {
-      VectorTools::point_value(mapping, dof_handler, u, pd.reference_position[i], value);
+      VectorTools::point_value(mapping, dof_handler, u, pd.reference_positions()[i], value);
       return Tensor<1, 2>({value[0], value[1]});
     };
     double       slave_error = 0;
     unsigned int n_slaves = 0, n_overlap = 0;
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (pd.is_slave[i])
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (pd.is_slave(i))
         {
-          slave_error = std::max(slave_error, (pd.displacement[i] - interpolated(i)).norm());
+          slave_error = std::max(slave_error, (pd.get_state().displacements()[i] - interpolated(i)).norm());
           ++n_slaves;
         }
-      else if (pd.alpha[i] > 0)
+      else if (pd.blending_weights()[i] > 0)
         {
-          pd.displacement[i] = interpolated(i);
+          pd.get_state().displacements()[i] = interpolated(i);
           ++n_overlap;
         }
     report("slave particles checked", n_slaves);

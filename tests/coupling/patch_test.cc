@@ -42,10 +42,10 @@ namespace
         sum += f;
       }
     const auto &pd = *simulator->get_pd_zone();
-    for (unsigned int i = 0; i < pd.n_owned; ++i)
-      if (!pd.is_slave[i])
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (!pd.is_slave(i))
         {
-          const double f = pd.particle_mass(i) * pd.acceleration[i].norm();
+          const double f = pd.particle_mass(i) * pd.get_state().accelerations()[i].norm();
           largest        = std::max(largest, f);
           sum += f;
         }

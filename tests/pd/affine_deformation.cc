@@ -66,18 +66,18 @@ check_affine(const double       m,
   const double reach = 2 * (m * dx + 0.5 * dx);
   double       interior_force = 0, largest_force = 0, energy = 0;
   unsigned int n_interior = 0;
-  for (unsigned int i = 0; i < pd.n_owned; ++i)
+  for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
     {
-      largest_force = std::max(largest_force, pd.force_density[i].norm());
+      largest_force = std::max(largest_force, pd.force_densities()[i].norm());
       bool interior = true;
       for (unsigned int d = 0; d < dim; ++d)
-        interior = interior && pd.reference_position[i][d] > reach &&
-                   pd.reference_position[i][d] < n * dx - reach;
+        interior = interior && pd.reference_positions()[i][d] > reach &&
+                   pd.reference_positions()[i][d] < n * dx - reach;
       if (!interior)
         continue;
       ++n_interior;
-      interior_force = std::max(interior_force, pd.force_density[i].norm());
-      energy         = pd.energy_density[i]; // the same for every interior particle
+      interior_force = std::max(interior_force, pd.force_densities()[i].norm());
+      energy         = pd.energy_densities()[i]; // the same for every interior particle
     }
   AssertThrow(n_interior > 0, ExcMessage("no interior particle"));
   const std::string title = std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") +

@@ -40,7 +40,8 @@ check_consistency()
   AssertThrow(pd.n_global_broken_bonds() > 0, ExcMessage("the pre-crack cut no bond"));
 
   pd.compute_internal_forces();
-  const std::vector<Tensor<1, dim>> force = pd.force_density;
+  const auto                        densities = pd.force_densities();
+  const std::vector<Tensor<1, dim>> force(densities.begin(), densities.end());
   const double                      h     = 1e-6 * dx;
   double                            largest = 0, worst = 0;
   // Bulk, corner, surface, beside the crack faces and at the crack tip (in units of the
@@ -62,20 +63,20 @@ check_consistency()
   for (const auto &target : targets)
     {
       unsigned int k = 0;
-      for (unsigned int i = 0; i < pd.n_owned; ++i)
-        if (pd.reference_position[i].distance(target) <
-            pd.reference_position[k].distance(target))
+      for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+        if (pd.reference_positions()[i].distance(target) <
+            pd.reference_positions()[k].distance(target))
           k = i;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double saved = pd.displacement[k][d];
-          pd.displacement[k][d] = saved + h;
+          const double saved = pd.get_state().displacements()[k][d];
+          pd.get_state().displacements()[k][d] = saved + h;
           pd.compute_internal_forces();
           const double plus = pd.strain_energy();
-          pd.displacement[k][d] = saved - h;
+          pd.get_state().displacements()[k][d] = saved - h;
           pd.compute_internal_forces();
           const double minus = pd.strain_energy();
-          pd.displacement[k][d] = saved;
+          pd.get_state().displacements()[k][d] = saved;
           const double derivative = (plus - minus) / (2 * h);
           largest = std::max(largest, std::abs(force[k][d] * volume));
           worst   = std::max(worst, std::abs(force[k][d] * volume + derivative));

@@ -110,13 +110,13 @@ precracked_plate()
   // Every bond broken after the start lies ahead of the tip (x > 0.02 - delta), within a few
   // horizons of the crack line y = 0.02.
   double                    farthest_from_line = 0, tip = 0;
-  const std::vector<double> damage             = pd.bonds.damage();
-  for (unsigned int i = 0; i < pd.n_owned; ++i)
-    if (damage[i] > 0 && pd.reference_position[i][0] > 0.02 - delta)
+  const std::vector<double> damage             = pd.get_bonds().damage();
+  for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+    if (damage[i] > 0 && pd.reference_positions()[i][0] > 0.02 - delta)
       {
         farthest_from_line =
-          std::max(farthest_from_line, std::abs(pd.reference_position[i][1] - 0.02));
-        tip = std::max(tip, pd.reference_position[i][0]);
+          std::max(farthest_from_line, std::abs(pd.reference_positions()[i][1] - 0.02));
+        tip = std::max(tip, pd.reference_positions()[i][0]);
       }
   report("pre-cracked plate: damaged particles' largest distance from the crack line / delta",
          farthest_from_line / delta);
@@ -131,10 +131,10 @@ precracked_plate()
   // bonds across the line cut.
   const double q_full  = full_family_weighted_volume(dx, delta);
   double       q_error = -1;
-  for (unsigned int i = 0; i < pd.n_owned; ++i)
-    if (std::abs(pd.reference_position[i][0] - (0.01 + dx / 2)) < dx / 4 &&
-        std::abs(pd.reference_position[i][1] - (0.02 + dx / 2)) < dx / 4)
-      q_error = std::abs(pd.bonds.weighted_volume[i] / q_full - 1);
+  for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+    if (std::abs(pd.reference_positions()[i][0] - (0.01 + dx / 2)) < dx / 4 &&
+        std::abs(pd.reference_positions()[i][1] - (0.02 + dx / 2)) < dx / 4)
+      q_error = std::abs(pd.get_bonds().weighted_volume[i] / q_full - 1);
   q_error = Utilities::MPI::max(q_error, MPI_COMM_WORLD);
   check_above("pre-cracked plate: particle next to the crack line found", q_error, -0.5);
   check_below("pre-cracked plate: |q / q of the full family - 1| next to the crack line",

@@ -34,7 +34,7 @@ namespace UserCriteria
                const PeriArlequin::PDMaterialModel<dim> &) override
     {}
     void
-    break_bonds(BondFamilies<dim> &bonds, const std::vector<Tensor<1, dim>> &u) const override
+    break_bonds(BondFamilies<dim> &bonds, ArrayView<const Tensor<1, dim>>  u) const override
     {
       for (unsigned int i = 0; i < bonds.n_owned; ++i)
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)

@@ -63,12 +63,12 @@ namespace UserModels
     }
     void
     compute_particle_scalars(const BondFamilies<dim> &,
-                             const std::vector<Tensor<1, dim>> &,
+                             ArrayView<const Tensor<1, dim>>,
                              std::vector<double> &) const override
     {}
     void
     compute_forces(const BondFamilies<dim>          &bonds,
-                   const std::vector<Tensor<1, dim>> &u,
+                   ArrayView<const Tensor<1, dim>>  u,
                    const std::vector<double> &,
                    const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>> &force_density,
@@ -143,15 +143,15 @@ check_user_model(const double stiffness_factor)
   auto        &pd    = *simulator->get_pd_zone();
   const double L     = dim == 2 ? 0.02 : 0.016, reach = 3.015 * dx + 0.5 * dx;
   double       inner = 0, largest = 0, energy = 0;
-  for (unsigned int i = 0; i < pd.n_owned; ++i)
+  for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
     {
-      largest       = std::max(largest, pd.force_density[i].norm());
+      largest       = std::max(largest, pd.force_densities()[i].norm());
       bool interior = true;
       for (unsigned int d = 0; d < dim; ++d)
-        interior = interior && pd.reference_position[i][d] > reach &&
-                   pd.reference_position[i][d] < L - reach;
+        interior = interior && pd.reference_positions()[i][d] > reach &&
+                   pd.reference_positions()[i][d] < L - reach;
       if (interior)
-        inner = std::max(inner, pd.force_density[i].norm()), energy = pd.energy_density[i];
+        inner = std::max(inner, pd.force_densities()[i].norm()), energy = pd.energy_densities()[i];
     }
   std::ostringstream title;
   title << dim << "D calibrated PMB (user model), stiffness factor " << stiffness_factor;

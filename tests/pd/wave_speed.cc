@@ -21,11 +21,11 @@ double
 centroid(const PeriArlequin::PDZone<2> &pd, const double x0)
 {
   double moments[2] = {0, 0};
-  for (unsigned int i = 0; i < pd.n_owned; ++i)
-    if (pd.reference_position[i][0] > x0)
+  for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+    if (pd.reference_positions()[i][0] > x0)
       {
-        moments[0] += pd.displacement[i][0] * pd.reference_position[i][0];
-        moments[1] += pd.displacement[i][0];
+        moments[0] += pd.get_state().displacements()[i][0] * pd.reference_positions()[i][0];
+        moments[1] += pd.get_state().displacements()[i][0];
       }
   Utilities::MPI::sum(ArrayView<const double>(moments, 2),
                       MPI_COMM_WORLD,

@@ -5,6 +5,8 @@
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/fe/component_mask.h>
 
+#include <periarlequin/base/parameters.h>
+
 #include <array>
 #include <memory>
 

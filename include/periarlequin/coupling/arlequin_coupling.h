@@ -80,7 +80,7 @@ namespace PeriArlequin
   private:
     /** g = H^T (N x - y) for an FE field @p x and PD field @p y at the overlap nodes. */
     void
-    constraint(const VectorType &x, const std::vector<Tensor<1, dim>> &y, VectorType &g) const;
+    constraint(const VectorType &x, ArrayView<const Tensor<1, dim>> y, VectorType &g) const;
 
     const Parameters::Coupling parameters;
     const MultiplierMesh       mesh;

@@ -2,6 +2,7 @@
 #define periarlequin_pd_fracture_criterion_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
 
 #include <periarlequin/base/plugin_registry.h>
@@ -47,7 +48,7 @@ namespace PeriArlequin
      * bit-identical on both).
      */
     virtual void
-    break_bonds(BondFamilies<dim> &bonds, const std::vector<Tensor<1, dim>> &displacement) const = 0;
+    break_bonds(BondFamilies<dim> &bonds, ArrayView<const Tensor<1, dim>>  displacement) const = 0;
 
     /** The critical bond stretch [-] for the run's summary; 0 if the criterion has none. */
     virtual double
@@ -75,7 +76,7 @@ namespace PeriArlequin
                const PDMaterialModel<dim>          &model) override;
     void
     break_bonds(BondFamilies<dim>                 &bonds,
-                const std::vector<Tensor<1, dim>> &displacement) const override;
+                ArrayView<const Tensor<1, dim>>  displacement) const override;
     double
     critical_stretch() const override;
 

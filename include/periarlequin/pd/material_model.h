@@ -2,6 +2,7 @@
 #define periarlequin_pd_material_model_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
 
 #include <periarlequin/base/parameters.h>
@@ -53,7 +54,7 @@ namespace PeriArlequin
     /** Fill scalars[n_particle_scalars() * i + k] for every owned particle i. */
     virtual void
     compute_particle_scalars(const BondFamilies<dim>          &bonds,
-                             const std::vector<Tensor<1, dim>> &displacement,
+                             ArrayView<const Tensor<1, dim>>  displacement,
                              std::vector<double>               &scalars) const = 0;
 
     /**
@@ -65,7 +66,7 @@ namespace PeriArlequin
      */
     virtual void
     compute_forces(const BondFamilies<dim>          &bonds,
-                   const std::vector<Tensor<1, dim>> &displacement,
+                   ArrayView<const Tensor<1, dim>>  displacement,
                    const std::vector<double>         &scalars,
                    const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>>       &force_density,
@@ -114,11 +115,11 @@ namespace PeriArlequin
     particle_scalar_names() const override;
     void
     compute_particle_scalars(const BondFamilies<dim>          &bonds,
-                             const std::vector<Tensor<1, dim>> &displacement,
+                             ArrayView<const Tensor<1, dim>>  displacement,
                              std::vector<double>               &scalars) const override;
     void
     compute_forces(const BondFamilies<dim>          &bonds,
-                   const std::vector<Tensor<1, dim>> &displacement,
+                   ArrayView<const Tensor<1, dim>>  displacement,
                    const std::vector<double>         &scalars,
                    const std::vector<double>         &state_weight,
                    std::vector<Tensor<1, dim>>       &force_density,

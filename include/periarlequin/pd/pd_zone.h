@@ -13,15 +13,17 @@
 #include <periarlequin/base/regions.h>
 #include <periarlequin/pd/bond_families.h>
 #include <periarlequin/pd/fracture_criterion.h>
+#include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
 #include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/material_model.h>
+#include <periarlequin/pd/particle_state.h>
+#include <periarlequin/pd/prescribed_particles.h>
 #include <periarlequin/time/integrated_zone.h>
 
 #include <array>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace PeriArlequin
@@ -159,21 +161,36 @@ namespace PeriArlequin
     const Particles::ParticleHandler<dim> &
     get_particle_handler() const;
 
-    /** Flat state, owned particles [0, n_owned) then ghosts. */
-    unsigned int n_owned = 0;
-    std::vector<Point<dim>>            reference_position;
-    std::vector<types::particle_index> particle_id;
-    std::vector<Tensor<1, dim>>        displacement, velocity, acceleration;
-    std::vector<Tensor<1, dim>>        force_density;
-    std::vector<double>                energy_density;
-    std::vector<double>                model_scalars;
-    BondFamilies<dim>                  bonds;
-
+    /** Owned particles on this rank; their local numbers are [0, n). */
+    unsigned int
+    n_owned_particles() const;
+    /** Reference positions, owned particles then ghosts [m]. */
+    ArrayView<const Point<dim>>
+    reference_positions() const;
+    /** Particle ids (lattice site ids), owned particles then ghosts. */
+    ArrayView<const types::particle_index>
+    particle_ids() const;
+    /** Displacements, velocities and accelerations (the coupling writes the slaves'). */
+    ParticleState<dim> &
+    get_state();
+    const ParticleState<dim> &
+    get_state() const;
+    /** Internal force density of the owned particles at the last force evaluation [N/m^dim]. */
+    ArrayView<const Tensor<1, dim>>
+    force_densities() const;
+    /** Strain energy density of the owned particles (blended if energy blending) [J/m^dim]. */
+    ArrayView<const double>
+    energy_densities() const;
     /** Blending weight alpha of owned and ghost particles. */
-    std::vector<double>        alpha;
-    /** Slave flag of owned particles (alpha = 1). */
-    std::vector<unsigned char> is_slave;
+    ArrayView<const double>
+    blending_weights() const;
+    /** Is owned particle @p i a slave (alpha = 1)? */
+    bool
+    is_slave(const unsigned int i) const;
+    const BondFamilies<dim> &
+    get_bonds() const;
 
+    /** Lattice cell volume dx^dim [m^dim]. */
     double
     particle_volume() const;
     /** Mass of owned particle @p i, weighted and floored [kg]. */
@@ -195,16 +212,32 @@ namespace PeriArlequin
     std::vector<std::pair<unsigned int, double>>
     lattice_interpolation(const Point<dim> &x) const;
 
-    /** Copy a per-particle field of owned particles to the ghosts through the particles. */
+    /** Copy a per-particle field of owned particles to the ghosts (see GhostExchange). */
     void
-    update_ghosts(std::vector<double> &values, const unsigned int n_per_particle);
+    update_ghosts(ArrayView<double> values, const unsigned int n_per_particle);
     /** Copy the owned displacements to the ghosts. */
     void
     update_ghost_displacements();
 
+    /**
+     * Add particles between steps at the lattice sites of locally owned cells that
+     * @p additional_sites accepts and that hold none yet; the zone's extent becomes the
+     * union. Existing particles keep their kinematics and their broken bonds; ghosts,
+     * bonds (with pre-cracks and no-fail regions), model constants, blending weights and
+     * prescribed particles are rebuilt as set-up builds them. The new particles start at
+     * rest and undeformed; returns their local numbers, for the caller to set their state.
+     * The cells and their owners must not have changed since setup().
+     */
+    std::vector<unsigned int>
+    extend(const SiteFilter &additional_sites);
+
   private:
+    /** Insert a particle at every site of a locally owned cell that @p accept takes. */
     void
-    generate_particles();
+    insert_particles(const SiteFilter &accept);
+    /** Local numbers, ghosts, bonds, weights, model and prescribed particles. */
+    void
+    build_particle_structures();
     void
     build_bonds();
     void
@@ -212,7 +245,7 @@ namespace PeriArlequin
     void
     compute_blending_weights();
     void
-    restore_prescribed_velocities();
+    set_initial_state();
 
     parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Peridynamics<dim>       &parameters;
@@ -220,35 +253,32 @@ namespace PeriArlequin
     const MPI_Comm                             communicator;
     MappingQ<dim>                              mapping;
     Particles::ParticleHandler<dim>            particle_handler;
+    GhostExchange<dim>                         ghosts;
+    ParticleState<dim>                         state;
+    BondFamilies<dim>                          bonds;
     std::unique_ptr<PDMaterialModel<dim>>      model;
     std::unique_ptr<FractureCriterion<dim>>    fracture;
+    PrescribedParticles<dim>                   prescribed;
     SiteFilter                                 extent;
     WeightFunction                             blending_weight;
     bool                                       energy_blending     = false;
     double                                     minimum_mass_weight = 1.;
     const ProblemData<dim>                    *problem_data        = nullptr;
-    /** Per particle: strain-energy weight inside the sums (owned and ghost), nodal force
-     * weight and mass weight (owned). */
-    std::vector<double>                        state_weight, force_weight, mass_weight;
-    std::unordered_map<types::particle_index, unsigned int> local_index_of_id;
+    Lattice<dim>                               lattice;
+    double                                     time_step           = 0;
 
-    Lattice<dim>                 lattice;
+    /** Model outputs of owned particles, and its particle scalars (owned and ghosts). */
+    std::vector<Tensor<1, dim>> force_density;
+    std::vector<double>         energy_density, model_scalars;
+    /** Blending weight alpha and strain-energy weight inside the sums (owned and ghost);
+     * nodal force weight, mass weight and slave flag (owned). */
+    std::vector<double>         alpha, state_weight, force_weight, mass_weight;
+    std::vector<unsigned char>  slave;
 
-    double                       time_step        = 0;
-
-    struct PrescribedParticle
-    {
-      unsigned int   local_index;
-      unsigned int   region;
-      /** Prescribed velocity at the current time (prescribed components only). */
-      Tensor<1, dim> velocity;
-    };
-    std::vector<PrescribedParticle> prescribed_particles;
     /** Applied force (body force plus support reactions) of owned particles [N]. */
-    std::vector<Tensor<1, dim>>     applied_force, previous_applied_force, previous_displacement;
-    double                          work        = 0;
-    bool                            tracks_work = false;
-    std::vector<double>             exchange_buffer;
+    std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
+    double                      work        = 0;
+    bool                        tracks_work = false;
   };
 } // namespace PeriArlequin
 

@@ -1,0 +1,71 @@
+#ifndef periarlequin_pd_prescribed_particles_h
+#define periarlequin_pd_prescribed_particles_h
+
+#include <periarlequin/pd/particle_state.h>
+#include <periarlequin/pd/pd_parameters.h>
+
+#include <vector>
+
+namespace PeriArlequin
+{
+  /**
+   * The owned particles in the regions of Peridynamics/Prescribed motion N, whose prescribed
+   * components follow a function of time (displacement or velocity) instead of the equation
+   * of motion. The velocity and acceleration of a prescribed component come from central
+   * differences of the function over one time step, so that Verlet reproduces the motion.
+   */
+  template <int dim>
+  class PrescribedParticles
+  {
+  public:
+    explicit PrescribedParticles(const Parameters::Peridynamics<dim> &parameters);
+
+    /** Collect the owned particles (the first @p n_owned of @p positions) in the regions. */
+    void
+    reinit(ArrayView<const Point<dim>> positions, const unsigned int n_owned);
+
+    /** Does no rank hold a prescribed particle? (collective) */
+    bool
+    empty(const MPI_Comm communicator) const;
+
+    /**
+     * Evaluate the motion at @p time: a prescribed displacement is set in @p state; the
+     * velocity and acceleration of every prescribed component are stored and written.
+     */
+    void
+    impose(const double time, const double dt, ParticleState<dim> &state);
+
+    /** Write the stored velocities of the prescribed components again. */
+    void
+    restore_velocities(ParticleState<dim> &state) const;
+    /** Write the stored accelerations of the prescribed components again. */
+    void
+    restore_accelerations(ParticleState<dim> &state) const;
+
+    /** Call @p visit(i, d) for every prescribed component d of owned particle i. */
+    template <typename Visitor>
+    void
+    for_each_component(const Visitor &visit) const
+    {
+      for (const auto &p : particles)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (parameters.prescribed[p.region].components[d])
+            visit(p.local_index, d);
+    }
+
+  private:
+    struct Particle
+    {
+      unsigned int   local_index;
+      unsigned int   region;
+      Point<dim>     position;
+      /** Prescribed velocity and acceleration at the current time (prescribed components). */
+      Tensor<1, dim> velocity, acceleration;
+    };
+
+    const Parameters::Peridynamics<dim> &parameters;
+    std::vector<Particle>                particles;
+  };
+} // namespace PeriArlequin
+
+#endif

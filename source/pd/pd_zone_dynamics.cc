@@ -1,0 +1,240 @@
+#include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  PDZone<dim>::compute_internal_forces()
+  {
+    update_ghost_displacements();
+    model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
+    if (model->n_particle_scalars() > 0)
+      ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
+    model->compute_forces(
+      bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::impose_prescribed_motion(const double time)
+  {
+    prescribed.impose(time, time_step, state);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::predict(const double dt)
+  {
+    const auto u = state.displacements(), v = state.velocities();
+    const auto a = state.accelerations();
+    if (tracks_work)
+      {
+        previous_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
+        previous_applied_force = applied_force;
+      }
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        u[i] += dt * v[i] + (0.5 * dt * dt) * a[i];
+        v[i] += (0.5 * dt) * a[i];
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::compute_accelerations(const double time)
+  {
+    const ProblemData<dim> &data = *problem_data;
+    update_ghost_displacements();
+    if (fracture)
+      fracture->break_bonds(bonds, state.displacements());
+    model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
+    if (model->n_particle_scalars() > 0)
+      ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
+    model->compute_forces(
+      bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
+
+    const double   rho = material.density, volume = particle_volume();
+    const auto     x = ghosts.reference_positions();
+    const auto     a = state.accelerations();
+    Vector<double> body(dim);
+    auto          &body_force = data.body_force;
+    body_force.set_time(time);
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        Tensor<1, dim> b;
+        if (data.has_body_force)
+          {
+            body_force.vector_value(x[i], body);
+            for (unsigned int d = 0; d < dim; ++d)
+              b[d] = body(d);
+          }
+        // A slave's acceleration is that of the FE field, set by the coupling.
+        if (!slave[i])
+          a[i] = (force_weight[i] * force_density[i] + (1. - alpha[i]) * b) /
+                 (rho * mass_weight[i]);
+        applied_force[i] = (1. - alpha[i]) * volume * b;
+      }
+    prescribed.restore_accelerations(state);
+    // Load plus support reaction of a prescribed component: m a - f V.
+    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
+      applied_force[i][d] = particle_mass(i) * a[i][d] - blended_force(i)[d];
+    });
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::account_work()
+  {
+    if (!tracks_work)
+      return;
+    // Trapezoidal work of the applied forces over the step.
+    const auto u         = state.displacements();
+    double     increment = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      increment += (previous_applied_force[i] + applied_force[i]) * (u[i] - previous_displacement[i]);
+    work += 0.5 * increment;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::correct(const double dt)
+  {
+    const auto v = state.velocities();
+    const auto a = state.accelerations();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      v[i] += (0.5 * dt) * a[i];
+    // Prescribed components keep the velocity of this time, set by impose_prescribed_motion().
+    prescribed.restore_velocities(state);
+  }
+
+  namespace
+  {
+    /**
+     * Pseudo-random value in [-1, 1) from a particle id and a component: a start vector for
+     * power iterations with a component on every mode, the same on every partition.
+     */
+    double
+    hashed_value(const types::particle_index id, const unsigned int component)
+    {
+      std::uint64_t h = (id * 3 + component + 1) * 0x9E3779B97F4A7C15ULL;
+      h ^= h >> 31;
+      h *= 0xBF58476D1CE4E5B9ULL;
+      h ^= h >> 29;
+      return static_cast<double>(h >> 11) / static_cast<double>(1ULL << 52) - 1.;
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  PDZone<dim>::estimate_stable_time_step(const unsigned int max_iterations)
+  {
+    const unsigned int          n_owned = ghosts.n_owned();
+    const auto                  u       = state.displacements();
+    const std::vector<Tensor<1, dim>> saved(u.begin(), u.end());
+    std::vector<Tensor<1, dim>> x(n_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        x[i][d] = hashed_value(ghosts.ids()[i], d);
+    const auto norm = [&](const std::vector<Tensor<1, dim>> &v) {
+      double sum = 0;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        sum += v[i] * v[i];
+      return std::sqrt(Utilities::MPI::sum(sum, communicator));
+    };
+    // The operator is applied as -f(eps x) / (rho eps) with eps x far below the lattice
+    // spacing, where the force is linear in the displacement to about 1e-8.
+    double eigenvalue = 0;
+    for (unsigned int it = 0; it < max_iterations; ++it)
+      {
+        const double scale = 1. / norm(x);
+        double       max_entry = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            x[i] *= scale;
+            for (unsigned int d = 0; d < dim; ++d)
+              max_entry = std::max(max_entry, std::abs(x[i][d]));
+          }
+        const double eps = 1e-8 * parameters.lattice_spacing /
+                           Utilities::MPI::max(max_entry, communicator);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          u[i] = slave[i] ? Tensor<1, dim>() : eps * x[i];
+        compute_internal_forces();
+        double rayleigh = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const Tensor<1, dim> y =
+              slave[i] ? Tensor<1, dim>() :
+                            -(force_weight[i] * force_density[i]) /
+                              (material.density * mass_weight[i] * eps);
+            rayleigh += x[i] * y;
+            x[i] = y;
+          }
+        rayleigh             = Utilities::MPI::sum(rayleigh, communicator);
+        const bool converged = std::abs(rayleigh - eigenvalue) <= 1e-6 * rayleigh;
+        eigenvalue           = rayleigh;
+        if (converged)
+          break;
+      }
+    std::copy(saved.begin(), saved.end(), u.begin());
+    compute_internal_forces();
+    AssertThrow(eigenvalue > 0,
+                ExcMessage("The PD stable-step estimate found no positive eigenvalue: does "
+                           "the PD zone have bonds?"));
+    return 2. / std::sqrt(eigenvalue);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::kinetic_energy() const
+  {
+    const auto v   = state.velocities();
+    double     sum = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (!slave[i])
+        sum += mass_weight[i] * (v[i] * v[i]);
+    return 0.5 * material.density * particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::strain_energy() const
+  {
+    // With energy blending the model weighted the densities already.
+    double sum = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      sum += (energy_blending ? 1. : 1. - alpha[i]) * energy_density[i];
+    return particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  PDZone<dim>::energies_in(const Region<dim> &region) const
+  {
+    const auto x       = ghosts.reference_positions();
+    const auto v       = state.velocities();
+    double     sums[2] = {0, 0};
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (region.contains(x[i]))
+        {
+          sums[0] += v[i] * v[i];
+          sums[1] += energy_density[i];
+        }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {0.5 * material.density * particle_volume() * sums[0], particle_volume() * sums[1]};
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::external_work() const
+  {
+    return Utilities::MPI::sum(work, communicator);
+  }
+
+  template class PDZone<2>;
+  template class PDZone<3>;
+} // namespace PeriArlequin
