@@ -43,10 +43,6 @@ namespace PeriArlequin
     AssertThrow(stencil.size() < std::numeric_limits<std::uint16_t>::max(),
                 ExcMessage("The horizon holds too many lattice neighbours (" +
                            std::to_string(stencil.size()) + "): reduce the horizon factor."));
-    family_begin.assign(1, 0);
-    neighbor.clear();
-    stencil_index.clear();
-    state.clear();
   }
 
   template <int dim>
@@ -119,6 +115,90 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_owned; ++i)
       all[i] = all[i] > 0 ? 1. - kept[i] / all[i] : 0.;
     return all;
+  }
+
+  template <int dim>
+  void
+  BondFamilies<dim>::build(const Lattice<dim>                           &lattice,
+                           GhostExchange<dim>                           &ghosts,
+                           const std::function<bool(const Point<dim> &)> &extent,
+                           const std::vector<PreCrack<dim>>             &pre_cracks,
+                           const Region<dim>                            &no_fail_region)
+  {
+    const unsigned int owned = ghosts.n_owned();
+    const auto         x       = ghosts.reference_positions();
+    const auto         ids     = ghosts.ids();
+    family_begin.assign(1, 0);
+    neighbor.clear();
+    stencil_index.clear();
+    state.clear();
+    weighted_volume.assign(ghosts.n_total(), 0.);
+
+    for (unsigned int i = 0; i < owned; ++i)
+      {
+        const auto site = lattice.site(ids[i]);
+        begin_family();
+        for (unsigned int k = 0; k < stencil.size(); ++k)
+          {
+            const auto other = lattice.neighbour(site, stencil[k].offset);
+            if (!other)
+              continue;
+            const unsigned int j = ghosts.local_index(lattice.id(*other));
+            if (j == numbers::invalid_unsigned_int)
+              {
+                AssertThrow(!extent(lattice.position(*other)),
+                            ExcMessage("A neighbour within the horizon is neither owned nor a "
+                                       "ghost particle: the ghost layer does not cover the "
+                                       "horizon."));
+                continue;
+              }
+            // The full family gives the weighted volume; a bond between two owned particles
+            // is stored only at the lower local index.
+            weighted_volume[i] +=
+              stencil[k].length * stencil[k].length * stencil[k].volume;
+            if (j < owned && j < i)
+              continue;
+            // Test the crack with the ends in the order of their global ids, so that the
+            // ranks holding the two ends decide alike even for a bond grazing a crack tip.
+            const bool        i_first = ids[i] < ids[j];
+            const Point<dim> &first   = x[i_first ? i : j];
+            const Point<dim> &second  = x[i_first ? j : i];
+            auto              bond_state = BondFamilies<dim>::intact;
+            for (const auto &crack : pre_cracks)
+              if (crack.cuts(first, second))
+                bond_state = BondFamilies<dim>::broken;
+            if (bond_state != BondFamilies<dim>::broken &&
+                (no_fail_region.contains(x[i]) ||
+                 no_fail_region.contains(x[j])))
+              bond_state = BondFamilies<dim>::unbreakable;
+            add_bond(j, k, bond_state);
+          }
+      }
+    end_families(owned, ghosts.n_total());
+    ghosts.update_ghosts(make_array_view(weighted_volume), 1);
+  }
+
+  template <int dim>
+  std::set<typename BondFamilies<dim>::IdPair>
+  BondFamilies<dim>::broken_bonds(ArrayView<const types::particle_index> ids) const
+  {
+    std::set<IdPair> broken_pairs;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        if (state[n] == broken)
+          broken_pairs.emplace(std::minmax(ids[i], ids[neighbor[n]]));
+    return broken_pairs;
+  }
+
+  template <int dim>
+  void
+  BondFamilies<dim>::break_bonds(const std::set<IdPair>               &broken_pairs,
+                                 ArrayView<const types::particle_index> ids)
+  {
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        if (broken_pairs.count(std::minmax(ids[i], ids[neighbor[n]])))
+          state[n] = broken;
   }
 
   template class BondFamilies<2>;

@@ -3,7 +3,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
-#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -149,7 +148,7 @@ namespace PeriArlequin
     ghosts.reinit();
     check_horizon_covered();
     compute_blending_weights();
-    build_bonds();
+    bonds.build(lattice, ghosts, extent, parameters.pre_cracks, parameters.no_fail_region);
     model->initialize(material, bonds);
 
     const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
@@ -198,11 +197,7 @@ namespace PeriArlequin
       old_index[old_ids[i]] = i;
     const ParticleState<dim>            old_state = state;
     const std::vector<Tensor<1, dim>>   old_applied_force = applied_force;
-    std::set<std::pair<types::particle_index, types::particle_index>> broken;
-    for (unsigned int i = 0; i < n_old; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        if (bonds.state[n] == BondFamilies<dim>::broken)
-          broken.emplace(std::minmax(old_ids[i], old_ids[bonds.neighbor[n]]));
+    const auto broken = bonds.broken_bonds(old_ids);
 
     const SiteFilter old_extent = extent;
     extent = [old_extent, additional_sites](const Point<dim> &x) {
@@ -213,10 +208,7 @@ namespace PeriArlequin
     build_particle_structures();
 
     const auto ids = ghosts.ids();
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        if (broken.count(std::minmax(ids[i], ids[bonds.neighbor[n]])))
-          bonds.state[n] = BondFamilies<dim>::broken;
+    bonds.break_bonds(broken, ids);
 
     std::vector<unsigned int> added;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
@@ -264,59 +256,6 @@ namespace PeriArlequin
                                 parameters.horizon_factor,
                                 allowed.str());
       }
-  }
-
-  template <int dim>
-  void
-  PDZone<dim>::build_bonds()
-  {
-    const unsigned int n_owned = ghosts.n_owned();
-    const auto         x       = ghosts.reference_positions();
-    const auto         ids     = ghosts.ids();
-    bonds.weighted_volume.assign(ghosts.n_total(), 0.);
-
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        const auto site = lattice.site(ids[i]);
-        bonds.begin_family();
-        for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
-          {
-            const auto other = lattice.neighbour(site, bonds.stencil[k].offset);
-            if (!other)
-              continue;
-            const unsigned int j = ghosts.local_index(lattice.id(*other));
-            if (j == numbers::invalid_unsigned_int)
-              {
-                AssertThrow(!extent(lattice.position(*other)),
-                            ExcMessage("A neighbour within the horizon is neither owned nor a "
-                                       "ghost particle: the ghost layer does not cover the "
-                                       "horizon."));
-                continue;
-              }
-            // The full family gives the weighted volume; a bond between two owned particles
-            // is stored only at the lower local index.
-            bonds.weighted_volume[i] +=
-              bonds.stencil[k].length * bonds.stencil[k].length * bonds.stencil[k].volume;
-            if (j < n_owned && j < i)
-              continue;
-            // Test the crack with the ends in the order of their global ids, so that the
-            // ranks holding the two ends decide alike even for a bond grazing a crack tip.
-            const bool        i_first = ids[i] < ids[j];
-            const Point<dim> &first   = x[i_first ? i : j];
-            const Point<dim> &second  = x[i_first ? j : i];
-            auto              bond_state = BondFamilies<dim>::intact;
-            for (const auto &crack : parameters.pre_cracks)
-              if (crack.cuts(first, second))
-                bond_state = BondFamilies<dim>::broken;
-            if (bond_state != BondFamilies<dim>::broken &&
-                (parameters.no_fail_region.contains(x[i]) ||
-                 parameters.no_fail_region.contains(x[j])))
-              bond_state = BondFamilies<dim>::unbreakable;
-            bonds.add_bond(j, k, bond_state);
-          }
-      }
-    bonds.end_families(n_owned, ghosts.n_total());
-    ghosts.update_ghosts(make_array_view(bonds.weighted_volume), 1);
   }
 
   template <int dim>

@@ -3,8 +3,14 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <periarlequin/base/regions.h>
+#include <periarlequin/pd/ghost_exchange.h>
+#include <periarlequin/pd/lattice.h>
+
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -56,14 +62,28 @@ namespace PeriArlequin
     void
     build_stencil(const double dx, const double horizon);
 
-    /** Start a family for the next owned particle (call in order of local index). */
+    /**
+     * The families of the owned particles of @p ghosts on @p lattice (the stencil built):
+     * every stencil neighbour that is held, owned or ghost. A bond cut by one of
+     * @p pre_cracks starts broken, an intact one with an end in @p no_fail_region cannot
+     * break. A neighbour that @p extent accepts but that is not held means the ghost layer
+     * does not cover the horizon: an error. Fills weighted_volume for owned particles and
+     * ghosts.
+     */
     void
-    begin_family();
+    build(const Lattice<dim>                           &lattice,
+          GhostExchange<dim>                           &ghosts,
+          const std::function<bool(const Point<dim> &)> &extent,
+          const std::vector<PreCrack<dim>>             &pre_cracks,
+          const Region<dim>                            &no_fail_region);
+
+    using IdPair = std::pair<types::particle_index, types::particle_index>;
+    /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
+    std::set<IdPair>
+    broken_bonds(ArrayView<const types::particle_index> ids) const;
+    /** Break the stored bonds whose ends (ids @p ids) are a pair in @p broken. */
     void
-    add_bond(const unsigned int neighbor, const unsigned int stencil_index, const BondState state);
-    /** Close the CSR arrays after the last family. */
-    void
-    end_families(const unsigned int n_owned, const unsigned int n_total);
+    break_bonds(const std::set<IdPair> &broken, ArrayView<const types::particle_index> ids);
 
     unsigned int n_owned = 0;
     /** Owned plus ghost particles. */
@@ -107,6 +127,16 @@ namespace PeriArlequin
     /** Damage 1 - (intact bond volume)/(initial bond volume) of every owned particle. */
     std::vector<double>
     damage() const;
+
+  private:
+    /** Start a family for the next owned particle (call in order of local index). */
+    void
+    begin_family();
+    void
+    add_bond(const unsigned int neighbor, const unsigned int stencil_index, const BondState state);
+    /** Close the CSR arrays after the last family. */
+    void
+    end_families(const unsigned int n_owned, const unsigned int n_total);
   };
 } // namespace PeriArlequin
 

@@ -37,9 +37,14 @@ namespace PeriArlequin
    * positions (total Lagrangian: particles never move between cells). The owner of a
    * particle is the owner of its cell; ghost particles (one layer of ghost cells, so cells
    * must be at least a horizon wide) carry the displacements and model scalars of the
-   * neighbours owned elsewhere. The state lives in flat arrays indexed by a local particle
-   * number, owned particles first, then ghosts; particle properties only carry data across
-   * ranks and to output.
+   * neighbours owned elsewhere.
+   *
+   * The zone puts together its parts: the Lattice (ids, positions, neighbours), the
+   * GhostExchange (local numbering, owned particles first, then ghosts, and the ghost
+   * updates), the ParticleState (kinematics), the BondFamilies (with pre-cracks and no-fail
+   * regions), the material model and fracture criterion plugins and the
+   * PrescribedParticles. Particle properties only carry data across ranks and to output.
+   * extend() adds lattice sites between steps.
    *
    * Time integration is velocity Verlet, split as IntegratedZone says so that a coupled
    * integrator can interleave it with the FE zone.
@@ -238,8 +243,6 @@ namespace PeriArlequin
     /** Local numbers, ghosts, bonds, weights, model and prescribed particles. */
     void
     build_particle_structures();
-    void
-    build_bonds();
     void
     check_horizon_covered() const;
     void
