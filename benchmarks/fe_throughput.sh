@@ -26,8 +26,10 @@ subsection Time
   set End time = $(awk "BEGIN{print $steps*1e-9}")
 end
 subsection Initial conditions
-  subsection Velocity
-    set Function expression = $( [ "$1" = 2 ] && echo "sin(x); 0" || echo "sin(x); 0; 0" )
+  subsection function
+    subsection Velocity
+      set Function expression = $( [ "$1" = 2 ] && echo "sin(x); 0" || echo "sin(x); 0; 0" )
+    end
   end
 end
 PRM

@@ -59,8 +59,10 @@ subsection Time
   set Stability estimate iterations = 10
 end
 subsection Initial conditions
-  subsection Velocity
-    set Function expression = $velocity
+  subsection function
+    subsection Velocity
+      set Function expression = $velocity
+    end
   end
 end
 PRM

@@ -119,9 +119,7 @@ namespace PeriArlequin
 
   template <int dim>
   ProblemData<dim>::ProblemData()
-    : initial_displacement(dim)
-    , initial_velocity(dim)
-    , body_force(dim)
+    : body_force(dim)
   {}
 
   template <int dim>
@@ -129,8 +127,13 @@ namespace PeriArlequin
   ProblemData<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    declare_vector_function<dim>(prm, "Displacement", "Initial displacement u(x, 0) [m].");
-    declare_vector_function<dim>(prm, "Velocity", "Initial velocity v(x, 0) [m/s].");
+    prm.declare_entry("Model",
+                      "function",
+                      Patterns::Selection(InitialConditionRegistry<dim>::names()),
+                      "The initial displacement and velocity, by registered name:" +
+                        InitialConditionRegistry<dim>::documentation() +
+                        "\nA model's own parameters are in the subsection of its name.");
+    InitialConditionRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
 
     declare_vector_function<dim>(prm, "Body force", "Body force per unit volume b(x, t) [N/m^3].");
@@ -161,8 +164,7 @@ namespace PeriArlequin
   ProblemData<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    parse_vector_function(prm, "Initial conditions/", "Displacement", initial_displacement);
-    parse_vector_function(prm, "Initial conditions/", "Velocity", initial_velocity);
+    initial_condition = InitialConditionRegistry<dim>::create(prm.get("Model"), prm);
     prm.leave_subsection();
 
     parse_vector_function(prm, "", "Body force", body_force);

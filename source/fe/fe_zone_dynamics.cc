@@ -4,6 +4,37 @@
 
 namespace PeriArlequin
 {
+  namespace
+  {
+    /** A vector field given as a tensor-valued function object, for interpolation. */
+    template <int dim>
+    class VectorField : public Function<dim>
+    {
+    public:
+      explicit VectorField(std::function<Tensor<1, dim>(const Point<dim> &)> field)
+        : Function<dim>(dim)
+        , field(std::move(field))
+      {}
+
+      double
+      value(const Point<dim> &x, const unsigned int component) const override
+      {
+        return field(x)[component];
+      }
+
+      void
+      vector_value(const Point<dim> &x, Vector<double> &values) const override
+      {
+        const Tensor<1, dim> t = field(x);
+        for (unsigned int d = 0; d < dim; ++d)
+          values(d) = t[d];
+      }
+
+    private:
+      std::function<Tensor<1, dim>(const Point<dim> &)> field;
+    };
+  } // namespace
+
   template <int dim>
   void
   FEZone<dim>::initialize_state(const ProblemData<dim> &data, const double dt)
@@ -24,10 +55,13 @@ namespace PeriArlequin
                   Utilities::MPI::logical_or(!prescribed.empty(), communicator);
     work        = 0;
 
-    data.initial_displacement.set_time(0.);
-    data.initial_velocity.set_time(0.);
-    interpolate(data.initial_displacement, state.displacement);
-    interpolate(data.initial_velocity, state.velocity);
+    const InitialCondition<dim> &initial = *data.initial_condition;
+    interpolate(VectorField<dim>(
+                  [&](const Point<dim> &x) { return initial.displacement(x); }),
+                state.displacement);
+    interpolate(VectorField<dim>(
+                  [&](const Point<dim> &x) { return initial.velocity(x); }),
+                state.velocity);
   }
 
   template <int dim>

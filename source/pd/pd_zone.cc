@@ -165,21 +165,13 @@ namespace PeriArlequin
   void
   PDZone<dim>::set_initial_state()
   {
-    auto &u0 = problem_data->initial_displacement;
-    auto &v0 = problem_data->initial_velocity;
-    u0.set_time(0.);
-    v0.set_time(0.);
-    const auto     x = ghosts.reference_positions();
-    const auto     u = state.displacements(), v = state.velocities();
-    Vector<double> value(dim);
+    const InitialCondition<dim> &initial = *problem_data->initial_condition;
+    const auto                   x = ghosts.reference_positions();
+    const auto                   u = state.displacements(), v = state.velocities();
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
-        u0.vector_value(x[i], value);
-        for (unsigned int d = 0; d < dim; ++d)
-          u[i][d] = value(d);
-        v0.vector_value(x[i], value);
-        for (unsigned int d = 0; d < dim; ++d)
-          v[i][d] = value(d);
+        u[i] = initial.displacement(x[i]);
+        v[i] = initial.velocity(x[i]);
       }
     work = 0;
   }

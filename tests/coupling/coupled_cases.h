@@ -68,11 +68,11 @@ namespace PeriArlequinTests
     text << coupling_text(method, blending, "cg", false, overlap.str(), fe.str());
     text << "subsection Time\n  set Time step = 2e-7\n  set End time = " << end_time
          << "\nend\n"
-         << "subsection Initial conditions\n"
+         << "subsection Initial conditions\nsubsection function\n"
          << "  subsection Displacement\n    set Function expression = " << initial_displacement
          << "\n  end\n"
          << "  subsection Velocity\n    set Function expression = " << initial_velocity
-         << "\n  end\nend\n";
+         << "\n  end\nend\nend\n";
     if (fixed_boundary)
       {
         text << "subsection Boundary conditions\n";
@@ -126,11 +126,11 @@ namespace PeriArlequinTests
                             fe_region.str());
     text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
          << "\nend\n"
-         << "subsection Initial conditions\n"
+         << "subsection Initial conditions\nsubsection function\n"
          << "  subsection Displacement\n    set Function expression = " << initial_displacement
          << "\n  end\n"
          << "  subsection Velocity\n    set Function expression = " << initial_velocity
-         << "\n  end\nend\n"
+         << "\n  end\nend\nend\n"
          << quiet_output() << "subsection Output\n  set Energy interval = " << energy_interval
          << "\n  set Monitor region = -0.4, -0.04 : 0.4, 0.04\nend\n";
     return text.str();
@@ -189,10 +189,10 @@ namespace PeriArlequinTests
                           "-0.1, 0, 0 : -0.05, 0.02, 0.02 ; 0.05, 0, 0 : 0.1, 0.02, 0.02")
          << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
          << "\nend\n"
-         << "subsection Initial conditions\n  subsection Displacement\n"
+         << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
          << "    set Function expression = " << displacement
          << "\n  end\n  subsection Velocity\n    set Function expression = " << velocity
-         << "\n  end\nend\n"
+         << "\n  end\nend\nend\n"
          << quiet_output();
     return text.str();
   }

@@ -32,11 +32,11 @@ case_parameters(const std::string &boundaries)
       << "end\n"
       << "subsection Time\n  set Time step = " << (dim == 2 ? 4.5e-7 : 4e-7)
       << "\n  set End time = " << (dim == 2 ? 4.5e-7 : 4e-7) * 2000 << "\nend\n"
-      << "subsection Initial conditions\n"
+      << "subsection Initial conditions\nsubsection function\n"
       << "  subsection Velocity\n    set Function constants = L=" << (dim == 2 ? 0.4 : 0.2)
       << ", H=0.1\n"
       << "    set Function expression = 0.05*sin(pi*x/L)*cos(pi*y/H); 0.02*sin(2*pi*x/L)"
-      << (dim == 3 ? "; 0.03*sin(pi*x/L)*sin(pi*z/H)" : "") << "\n  end\n"
+      << (dim == 3 ? "; 0.03*sin(pi*x/L)*sin(pi*z/H)" : "") << "\n  end\nend\n"
       << "end\n"
       << boundaries << quiet_output();
   return prm.str();

@@ -23,9 +23,9 @@ case_parameters()
                      "  set Subdivisions = 10, 5, 5\n")
       << "end\n"
       << "subsection Time\n  set Time step = 5e-7\n  set End time = 1.5e-4\nend\n"
-      << "subsection Initial conditions\n  subsection Velocity\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Velocity\n"
       << "    set Function expression = 0.05*sin(pi*x/0.4); 0.01" << (dim == 3 ? "; 0" : "")
-      << "\n  end\nend\n"
+      << "\n  end\nend\nend\n"
       << "subsection Body force\n  set Function expression = 0; -2.7e4*sin(1e4*t)"
       << (dim == 3 ? "; 1e4" : "") << "\nend\n"
       << "subsection Boundary conditions\n"

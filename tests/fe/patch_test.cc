@@ -51,8 +51,8 @@ patch_test(const unsigned int degree, const std::string &model, const bool tract
         row << (j ? " + " : "") << G[i][j] << "*" << axis[j];
       affine += (i ? "; " : "") + row.str();
     }
-  prm << "subsection Initial conditions\n  subsection Displacement\n"
-      << "    set Function expression = " << affine << "\n  end\nend\n"
+  prm << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
+      << "    set Function expression = " << affine << "\n  end\nend\nend\n"
       << "subsection Boundary conditions\n";
   for (unsigned int b = 0; b < 2 * dim; ++b)
     {

@@ -48,10 +48,10 @@ measure_wave_speed()
       << "  set Density = 2700\n  set Two-dimensional model = plane stress\nend\n"
       << "subsection Time\n  set Time step = " << (dim == 2 ? 9e-7 : 1.7e-6)
       << "\n  set End time = 1\nend\n"
-      << "subsection Initial conditions\n  subsection Displacement\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
       << "    set Function constants = x0=" << x0 << ", w=" << (dim == 2 ? 0.4 : 0.6) << "\n"
       << "    set Function expression = if(abs(x-x0) < w/2, 1e-5*(1+cos(2*pi*(x-x0)/w)), 0)"
-      << (dim == 2 ? "; 0" : "; 0; 0") << "\n  end\nend\n"
+      << (dim == 2 ? "; 0" : "; 0; 0") << "\n  end\nend\nend\n"
       << "subsection Boundary conditions\n";
   for (unsigned int b = 2; b < 2 * dim; ++b)
     prm << "  subsection Boundary " << b << "\n    set Type = displacement\n"

@@ -54,8 +54,8 @@ check_affine(const double       m,
       << "subsection Peridynamics\n  set Region = " << box_text<dim>(Point<dim>(), upper)
       << "\n  set Lattice spacing = " << dx << "\n  set Horizon factor = " << m << "\nend\n"
       << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
-      << "subsection Initial conditions\n  subsection Displacement\n"
-      << "    set Function expression = " << expression.str() << "\n  end\nend\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
+      << "    set Function expression = " << expression.str() << "\n  end\nend\nend\n"
       << quiet_output();
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();

@@ -24,11 +24,11 @@ check_energy(const std::string &name, const std::string &extra)
       << "\n  set Lattice spacing = 1e-3\n" << extra << "end\n"
       << "subsection Time\n  set Time step = " << (dim == 2 ? 5e-8 : 2.5e-8)
       << "\n  set End time = " << (dim == 2 ? 5e-8 : 2.5e-8) * 2000 << "\nend\n"
-      << "subsection Initial conditions\n  subsection Velocity\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Velocity\n"
       << "    set Function constants = L=" << (dim == 2 ? 0.04 : 0.01)
       << ", H=" << (dim == 2 ? 0.02 : 0.01) << "\n"
       << "    set Function expression = 0.1*sin(pi*x/L)*cos(pi*y/H); 0.05*sin(2*pi*x/L)"
-      << (dim == 3 ? "; 0.05*sin(pi*z/H)" : "") << "\n  end\nend\n"
+      << (dim == 3 ? "; 0.05*sin(pi*z/H)" : "") << "\n  end\nend\nend\n"
       << (name.find("loaded") != std::string::npos ?
             "subsection Body force\n  set Function expression = 2e6*sin(3e4*t); 1e6\nend\n" :
             "")

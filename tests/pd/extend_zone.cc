@@ -48,12 +48,12 @@ namespace
         << "subsection Peridynamics\n  set Region = " << region
         << "\n  set Lattice spacing = 5e-4\n  set Fracture = true\n"
         << "  set Critical energy release rate = 100\nend\n"
-        << "subsection Initial conditions\n  subsection Displacement\n"
+        << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
         << "    set Function expression = 1e-3*x*x; 2e-3*x*y + ((x < 0.004 && y > 0.005) ? "
            "5e-5 : 0)"
         << (dim == 3 ? "; 1e-3*z*x" : "") << "\n  end\n  subsection Velocity\n"
         << "    set Function expression = 0.1*y; -0.2*x" << (dim == 3 ? "; 0.1*x" : "")
-        << "\n  end\nend\n"
+        << "\n  end\nend\nend\n"
         << "subsection Time\n  set Time step = 2e-8\n  set Stability estimate iterations = 5\n"
         << "end\n"
         << quiet_output();

@@ -28,9 +28,9 @@ check_consistency()
       << (dim == 2 ? "0, 0.0101 : 0.01, 0.0101" : "0, 0.0051, 0 : 0.005, 0, 0 : 0, 0, 0.01")
       << "\nend\n"
       << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
-      << "subsection Initial conditions\n  subsection Displacement\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
       << "    set Function expression = 1e-5*sin(7e3*x*y+3e2*y+1); 1e-5*cos(5e3*x+4e5*x*y)"
-      << (dim == 3 ? "; 1e-5*sin(3e3*z+2e5*x*y+9e2*x)" : "") << "\n  end\nend\n"
+      << (dim == 3 ? "; 1e-5*sin(3e3*z+2e5*x*y+9e2*x)" : "") << "\n  end\nend\nend\n"
       << quiet_output();
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();

@@ -36,9 +36,9 @@ main(int argc, char **argv)
                               "subsection Time\n"
                               "  set Time step = 5e-8\n  set End time = 5e-6\n"
                               "end\n"
-                              "subsection Initial conditions\n  subsection Velocity\n"
+                              "subsection Initial conditions\nsubsection function\n  subsection Velocity\n"
                               "    set Function expression = sin(300*x); 0.5*cos(400*y); 0\n"
-                              "  end\nend\n"
+                              "  end\nend\nend\n"
                               "subsection Body force\n"
                               "  set Function expression = 0; 0; 1e7*sin(1e6*t)\n"
                               "end\n" +

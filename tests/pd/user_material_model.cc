@@ -134,9 +134,9 @@ check_user_model(const double stiffness_factor)
       << "  subsection calibrated PMB\n    set Stiffness factor = " << stiffness_factor
       << "\n  end\nend\n"
       << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
-      << "subsection Initial conditions\n  subsection Displacement\n"
+      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
       << "    set Function expression = " << eps << "*x; " << eps << "*y"
-      << (dim == 3 ? std::string("; ") + std::to_string(eps) + "*z" : "") << "\n  end\nend\n"
+      << (dim == 3 ? std::string("; ") + std::to_string(eps) + "*z" : "") << "\n  end\nend\nend\n"
       << quiet_output();
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();

@@ -48,10 +48,10 @@ main(int argc, char **argv)
         << "    set Region = 0, 0 : 0.85, 0.0075 ; 0, 0.3925 : 0.85, 0.4\n"
         << "    set Type = velocity\n    set Components = y\n  end\nend\n"
         << "subsection Time\n  set Time step = 4e-7\n  set End time = 1\nend\n"
-        << "subsection Initial conditions\n  subsection Displacement\n"
+        << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
         << "    set Function constants = x0=" << x0 << ", w=" << w << "\n"
         << "    set Function expression = if(abs(x-x0) < w/2, 1e-6*(1+cos(2*pi*(x-x0)/w)), 0); 0\n"
-        << "  end\nend\n"
+        << "  end\nend\nend\n"
         << quiet_output();
     auto simulator = make_simulator<2>(prm.str());
     simulator->setup();

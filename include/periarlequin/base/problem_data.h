@@ -6,6 +6,7 @@
 #include <deal.II/fe/component_mask.h>
 
 #include <periarlequin/base/parameters.h>
+#include <periarlequin/base/initial_conditions.h>
 
 #include <array>
 #include <memory>
@@ -71,10 +72,10 @@ namespace PeriArlequin
   };
 
   /**
-   * The data of an elastodynamic problem that do not depend on its discretisation: initial
-   * displacement and velocity, body force, and the condition on each boundary id of the box.
-   * All are vector-valued muparser expressions with named constants ("Function constants"),
-   * so that e.g. the paper's initial pulse (eq. 81) is written in the parameter file.
+   * The data of an elastodynamic problem that do not depend on its discretisation: the
+   * initial condition (a registered model), the body force and the condition on each
+   * boundary id of the box, the latter vector-valued muparser expressions with named
+   * constants ("Function constants").
    */
   template <int dim>
   class ProblemData
@@ -89,9 +90,9 @@ namespace PeriArlequin
     void
     parse_parameters(ParameterHandler &prm);
 
-    // The functions are mutable: setting the evaluation time does not change the problem.
-    mutable Functions::ParsedFunction<dim> initial_displacement;
-    mutable Functions::ParsedFunction<dim> initial_velocity;
+    /** The model selected in "Initial conditions/Model". */
+    std::unique_ptr<InitialCondition<dim>> initial_condition;
+    // Mutable: setting the evaluation time does not change the problem.
     /** Body force per unit volume [N/m^3]. */
     mutable Functions::ParsedFunction<dim> body_force;
     /** True unless every component of the body-force expression is the literal 0. */
