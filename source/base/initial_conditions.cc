@@ -70,33 +70,39 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  WavePulseInitialCondition<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Amplitude", amplitude, Patterns::Double(), "a1 [m].");
+    entries.add("Modulation",
+                modulation,
+                Patterns::Double(),
+                "a2, relative amplitude of the short-wave modulation [-].");
+    entries.add("Width", width, Patterns::Double(), "w1, length of the pulse, > 0 [m].");
+    entries.add("Modulation wavelength",
+                modulation_wavelength,
+                Patterns::Double(),
+                "w2, > 0 [m].");
+    entries.add("Centre", centre, Patterns::Double(), "x0, x coordinate of the pulse's centre [m].");
+    const SelectionNames<unsigned int> axes = {{"x", 0}, {"y", 1}, {"z", 2}};
+    entries.add("Component",
+                component,
+                SelectionNames<unsigned int>(axes.begin(), axes.begin() + dim),
+                "Displacement component of the pulse: x gives a longitudinal (P) wave, y or z "
+                "a shear (S) wave.");
+  }
+
+  template <int dim>
+  void
   WavePulseInitialCondition<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Amplitude", "3e-4", Patterns::Double(), "a1 [m].");
-    prm.declare_entry("Modulation", "0.3", Patterns::Double(), "a2, relative amplitude of "
-                      "the short-wave modulation [-].");
-    prm.declare_entry("Width", "0.48", Patterns::Double(0), "w1, length of the pulse [m].");
-    prm.declare_entry("Modulation wavelength", "0.03", Patterns::Double(0), "w2 [m].");
-    prm.declare_entry("Centre", "0", Patterns::Double(), "x0, x coordinate of the pulse's "
-                      "centre [m].");
-    prm.declare_entry("Component",
-                      "x",
-                      Patterns::Selection(dim == 2 ? "x|y" : "x|y|z"),
-                      "Displacement component of the pulse: x gives a longitudinal (P) wave, "
-                      "y or z a shear (S) wave.");
+    ParameterEntries::declare_here<WavePulseInitialCondition<dim>>(prm);
   }
 
   template <int dim>
   void
   WavePulseInitialCondition<dim>::parse_parameters(ParameterHandler &prm)
   {
-    amplitude             = prm.get_double("Amplitude");
-    modulation            = prm.get_double("Modulation");
-    width                 = prm.get_double("Width");
-    modulation_wavelength = prm.get_double("Modulation wavelength");
-    centre                = prm.get_double("Centre");
-    const std::string c   = prm.get("Component");
-    component             = c == "x" ? 0 : (c == "y" ? 1 : 2);
+    ParameterEntries::parse_here(prm, *this, "Initial conditions/wave pulse/");
     if (!(width > 0))
       throw_invalid_parameter("Initial conditions/wave pulse/Width", width, "a length > 0 [m]");
     if (!(modulation_wavelength > 0))

@@ -34,85 +34,94 @@ namespace PeriArlequin
   namespace Parameters
   {
     void
+    Geometry::entries(ParameterEntries &entries)
+    {
+      entries.add("Lower corner",
+                  lower_corner,
+                  Patterns::List(Patterns::Double(), 2, 3),
+                  "Lower corner of the box domain, one coordinate per dimension [m].");
+      entries.add("Upper corner",
+                  upper_corner,
+                  Patterns::List(Patterns::Double(), 2, 3),
+                  "Upper corner of the box domain, one coordinate per dimension [m].");
+      entries.add("Subdivisions",
+                  subdivisions,
+                  Patterns::List(Patterns::Integer(1), 2, 3),
+                  "Number of coarse cells in each direction. Boundary ids are 0/1 on the "
+                  "lower/upper x faces, 2/3 on the y faces and 4/5 on the z faces.");
+      entries.add("Global refinements",
+                  global_refinements,
+                  Patterns::Integer(0, 12),
+                  "Uniform refinements of the coarse mesh (each halves the cell size).");
+    }
+
+    void
     Geometry::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Geometry");
-      prm.declare_entry("Lower corner",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Lower corner of the box domain, one coordinate per dimension [m].");
-      prm.declare_entry("Upper corner",
-                        "1, 1",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Upper corner of the box domain, one coordinate per dimension [m].");
-      prm.declare_entry("Subdivisions",
-                        "10, 10",
-                        Patterns::List(Patterns::Integer(1), 2, 3),
-                        "Number of coarse cells in each direction. Boundary ids are 0/1 on the "
-                        "lower/upper x faces, 2/3 on the y faces and 4/5 on the z faces.");
-      prm.declare_entry("Global refinements",
-                        "0",
-                        Patterns::Integer(0, 12),
-                        "Uniform refinements of the coarse mesh (each halves the cell size).");
-      prm.leave_subsection();
+      ParameterEntries::declare<Geometry>(prm, "Geometry");
     }
+
+    namespace
+    {
+      template <typename T>
+      std::string
+      list_text(const std::vector<T> &values)
+      {
+        std::ostringstream text;
+        for (unsigned int i = 0; i < values.size(); ++i)
+          text << (i > 0 ? ", " : "") << values[i];
+        return text.str();
+      }
+    } // namespace
 
     void
     Geometry::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
-      prm.enter_subsection("Geometry");
-      const auto read_list = [&](const std::string &name) {
-        const std::string text = prm.get(name);
-        const auto values = Utilities::string_to_double(Utilities::split_string_list(text));
+      ParameterEntries::parse(prm, "Geometry", *this);
+      const auto check_size = [&](const std::string &name, const auto &values) {
         if (values.size() != dim)
           throw_invalid_parameter("Geometry/" + name,
-                                  text,
+                                  list_text(values),
                                   "a list of exactly " + std::to_string(dim) +
                                     " numbers (one per dimension, Dimension = " +
                                     std::to_string(dim) + ")");
-        return values;
       };
-      lower_corner = read_list("Lower corner");
-      upper_corner = read_list("Upper corner");
-      const auto cells = read_list("Subdivisions");
-      subdivisions.assign(cells.begin(), cells.end());
+      check_size("Lower corner", lower_corner);
+      check_size("Upper corner", upper_corner);
+      check_size("Subdivisions", subdivisions);
       for (unsigned int d = 0; d < dim; ++d)
         if (!(upper_corner[d] > lower_corner[d]))
           throw_invalid_parameter("Geometry/Upper corner",
-                                  prm.get("Upper corner"),
+                                  list_text(upper_corner),
                                   "coordinates strictly above those of 'Lower corner' (" +
-                                    prm.get("Lower corner") + ")");
-      global_refinements = prm.get_integer("Global refinements");
-      prm.leave_subsection();
+                                    list_text(lower_corner) + ")");
+    }
+
+    void
+    Material::entries(ParameterEntries &entries)
+    {
+      entries.add("Young's modulus", youngs_modulus, Patterns::Double(), "Young's modulus E [Pa].");
+      entries.add("Poisson's ratio",
+                  poissons_ratio,
+                  Patterns::Double(),
+                  "Poisson's ratio nu [-], in (-1, 0.5).");
+      entries.add("Density", density, Patterns::Double(), "Mass density rho [kg/m^3].");
+      entries.add("Two-dimensional model",
+                  planar_model,
+                  planar_model_names,
+                  "How a 2D run treats the third direction. Ignored in 3D.");
     }
 
     void
     Material::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Material");
-      prm.declare_entry("Young's modulus", "69e9", Patterns::Double(), "Young's modulus E [Pa].");
-      prm.declare_entry("Poisson's ratio",
-                        "0.3",
-                        Patterns::Double(),
-                        "Poisson's ratio nu [-], in (-1, 0.5).");
-      prm.declare_entry("Density", "2700", Patterns::Double(), "Mass density rho [kg/m^3].");
-      prm.declare_entry("Two-dimensional model",
-                        "plane stress",
-                        selection_pattern(planar_model_names),
-                        "How a 2D run treats the third direction. Ignored in 3D.");
-      prm.leave_subsection();
+      ParameterEntries::declare<Material>(prm, "Material");
     }
 
     void
     Material::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Material");
-      youngs_modulus = prm.get_double("Young's modulus");
-      poissons_ratio = prm.get_double("Poisson's ratio");
-      density        = prm.get_double("Density");
-      planar_model = selection_value(prm.get("Two-dimensional model"), planar_model_names);
-      prm.leave_subsection();
-
+      ParameterEntries::parse(prm, "Material", *this);
       if (!(youngs_modulus > 0))
         throw_invalid_parameter("Material/Young's modulus",
                                 youngs_modulus,
@@ -155,49 +164,51 @@ namespace PeriArlequin
     }
 
     void
+    FiniteElements::entries(ParameterEntries &entries)
+    {
+      entries.add("Polynomial degree",
+                  degree,
+                  Patterns::Integer(1, 4),
+                  "Degree of the FE_Q displacement element of the classical zone.");
+    }
+
+    void
     FiniteElements::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Finite elements");
-      prm.declare_entry("Polynomial degree",
-                        "1",
-                        Patterns::Integer(1, 4),
-                        "Degree of the FE_Q displacement element of the classical zone.");
-      prm.leave_subsection();
+      ParameterEntries::declare<FiniteElements>(prm, "Finite elements");
     }
 
     void
     FiniteElements::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Finite elements");
-      degree = prm.get_integer("Polynomial degree");
-      prm.leave_subsection();
+      ParameterEntries::parse(prm, "Finite elements", *this);
+    }
+
+    void
+    Time::entries(ParameterEntries &entries)
+    {
+      entries.add("Time step",
+                  time_step,
+                  Patterns::Double(),
+                  "Step dt of the explicit integrator [s]; must be > 0 and not above the "
+                  "estimated stable step 2/sqrt(lambda_max(M^-1 K)).");
+      entries.add("End time", end_time, Patterns::Double(), "Simulated end time [s], > 0.");
+      entries.add("Stability estimate iterations",
+                  stability_iterations,
+                  Patterns::Integer(1),
+                  "Maximum power iterations for the largest eigenvalue of M^-1 K.");
     }
 
     void
     Time::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Time");
-      prm.declare_entry("Time step",
-                        "1e-7",
-                        Patterns::Double(),
-                        "Step dt of the explicit integrator [s]; must be > 0 and not above "
-                        "the estimated stable step 2/sqrt(lambda_max(M^-1 K)).");
-      prm.declare_entry("End time", "1e-5", Patterns::Double(), "Simulated end time [s], > 0.");
-      prm.declare_entry("Stability estimate iterations",
-                        "200",
-                        Patterns::Integer(1),
-                        "Maximum power iterations for the largest eigenvalue of M^-1 K.");
-      prm.leave_subsection();
+      ParameterEntries::declare<Time>(prm, "Time");
     }
 
     void
     Time::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Time");
-      time_step            = prm.get_double("Time step");
-      end_time             = prm.get_double("End time");
-      stability_iterations = prm.get_integer("Stability estimate iterations");
-      prm.leave_subsection();
+      ParameterEntries::parse(prm, "Time", *this);
       if (!(time_step > 0))
         throw_invalid_parameter("Time/Time step", time_step, "a value > 0 [s]");
       if (!(end_time > 0))
@@ -205,61 +216,55 @@ namespace PeriArlequin
     }
 
     void
+    Output::entries(ParameterEntries &entries)
+    {
+      entries.add("Directory",
+                  directory,
+                  Patterns::DirectoryName(),
+                  "Directory for the .pvtu/.pvd files and the energy history (created if "
+                  "missing).");
+      entries.add("Base name", base_name, Patterns::FileName(), "Prefix of output files.");
+      entries.add("Output interval",
+                  output_interval,
+                  Patterns::Integer(0),
+                  "Write fields every this many steps (0: never) [steps].");
+      entries.add("Energy interval",
+                  energy_interval,
+                  Patterns::Integer(0),
+                  "Record the energy history every this many steps (0: never) [steps].");
+      entries.add("Progress interval",
+                  progress_interval,
+                  Patterns::Double(0),
+                  "Print a progress line at most every this many wall-clock seconds (0: "
+                  "never) [s].");
+      entries.add("Print timing summary",
+                  print_timing,
+                  Patterns::Bool(),
+                  "Print the TimerOutput summary at the end of the run.");
+      entries.add("Sample line",
+                  sample_line,
+                  Patterns::Anything(),
+                  "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
+                  "<base>_line_<step>.csv with the displacement of the FE nodes on it and of "
+                  "the PD particles within half a lattice spacing of it. Empty: none.");
+      entries.add("Monitor region",
+                  monitor_region,
+                  Patterns::Anything(),
+                  "Boxes 'lower : upper ; ...' [m]: the PD particles whose kinetic and strain "
+                  "energy the history records as pure_pd_* (e.g. the pure PD zone of a "
+                  "coupled run, in its pure-PD reference). Empty: Peridynamics/Region.");
+    }
+
+    void
     Output::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      prm.declare_entry("Directory",
-                        "output",
-                        Patterns::DirectoryName(),
-                        "Directory for the .pvtu/.pvd files and the energy history (created "
-                        "if missing).");
-      prm.declare_entry("Base name", "solution", Patterns::FileName(), "Prefix of output files.");
-      prm.declare_entry("Output interval",
-                        "100",
-                        Patterns::Integer(0),
-                        "Write fields every this many steps (0: never) [steps].");
-      prm.declare_entry("Energy interval",
-                        "1",
-                        Patterns::Integer(0),
-                        "Record the energy history every this many steps (0: never) [steps].");
-      prm.declare_entry("Progress interval",
-                        "5",
-                        Patterns::Double(0),
-                        "Print a progress line at most every this many wall-clock seconds "
-                        "(0: never) [s].");
-      prm.declare_entry("Print timing summary",
-                        "true",
-                        Patterns::Bool(),
-                        "Print the TimerOutput summary at the end of the run.");
-      prm.declare_entry("Sample line",
-                        "",
-                        Patterns::Anything(),
-                        "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
-                        "<base>_line_<step>.csv with the displacement of the FE nodes on it and "
-                        "of the PD particles within half a lattice spacing of it. Empty: none.");
-      prm.declare_entry("Monitor region",
-                        "",
-                        Patterns::Anything(),
-                        "Boxes 'lower : upper ; ...' [m]: the PD particles whose kinetic and "
-                        "strain energy the history records as pure_pd_* (e.g. the pure PD zone "
-                        "of a coupled run, in its pure-PD reference). Empty: "
-                        "Peridynamics/Region.");
-      prm.leave_subsection();
+      ParameterEntries::declare<Output>(prm, "Output");
     }
 
     void
     Output::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      directory         = prm.get("Directory");
-      base_name         = prm.get("Base name");
-      output_interval   = prm.get_integer("Output interval");
-      energy_interval   = prm.get_integer("Energy interval");
-      progress_interval = prm.get_double("Progress interval");
-      print_timing      = prm.get_bool("Print timing summary");
-      sample_line       = prm.get("Sample line");
-      monitor_region    = prm.get("Monitor region");
-      prm.leave_subsection();
+      ParameterEntries::parse(prm, "Output", *this);
     }
   } // namespace Parameters
 } // namespace PeriArlequin

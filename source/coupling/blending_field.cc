@@ -9,86 +9,79 @@ namespace PeriArlequin
   namespace Parameters
   {
     void
+    Coupling::entries(ParameterEntries &entries)
+    {
+      // Couplings are registered for both dimensions under the same names.
+      entries.add("Method",
+                  method,
+                  Patterns::Selection("none|" + CouplingRegistry<2>::names()),
+                  "How the PD and FE zones are glued: none (uncoupled) or a registered "
+                  "coupling:" +
+                    CouplingRegistry<2>::documentation() +
+                    "\nA coupling's own parameters are in the subsection of its name.");
+      entries.add("Overlap region",
+                  overlap_text,
+                  Patterns::Anything(),
+                  "Boxes 'lower : upper ; ...' [m] where both zones live and alpha rises "
+                  "linearly from 0 (edge on the PD region) to 1 (edge on the FE region). "
+                  "Peridynamics/Region is the pure PD zone.");
+      entries.add("Finite element region",
+                  fe_region_text,
+                  Patterns::Anything(),
+                  "Boxes 'lower : upper ; ...' [m] of the pure FE zone (alpha = 1). The PD "
+                  "region, the overlap and this region must cover the domain.");
+      entries.add("Blending",
+                  blending,
+                  blending_names,
+                  "Where alpha enters the forces: paper (FE weight inside the stiffness "
+                  "integral, PD force weighted per node, eq. 47b and 55), energy (the weight "
+                  "inside the sums on both sides, forces from the blended Hamiltonian), force "
+                  "(nodal weights on both sides, FE force alpha_I (K u)_I).");
+      entries.add("Multiplier solver",
+                  multiplier_solver,
+                  multiplier_solver_names,
+                  "How A lambda = H^T (N v* - w*) is solved: diagonal (the paper's row-sum "
+                  "diagonal of A, eq. 68) or cg (conjugate gradients to a relative residual "
+                  "of 1e-12).");
+      entries.add("Fine-scale damping",
+                  damping,
+                  Patterns::Bool(),
+                  "Damp the fine-scale velocity w - N v of the PD nodes of the overlap "
+                  "(eq. 76-80) with C_I = C v_w alpha_I^2 / L_B.");
+      entries.add("Damping constant",
+                  damping_constant,
+                  Patterns::Double(0),
+                  "C of eq. 78 [-] (the paper's value is 30).");
+      entries.add("Damping wave speed",
+                  damping_wave_speed,
+                  Patterns::Double(0),
+                  "v_w of eq. 78 [m/s]; 0: the longitudinal wave speed of the material "
+                  "(plane stress or plane strain in 2D).");
+      entries.add("Damping overlap width",
+                  damping_overlap_width,
+                  Patterns::Double(0),
+                  "L_B of eq. 78 [m]; 0: the local width of the overlap, l1 + l2.");
+      entries.add("Minimum PD mass weight",
+                  minimum_mass_weight,
+                  Patterns::Double(0, 1),
+                  "Floor of the PD mass weight: a PD node of the overlap has the mass "
+                  "max(1 - alpha_I, this) rho V, so that nodes next to the alpha = 1 edge "
+                  "keep a finite mass and the stable step stays that of the lattice [-].");
+    }
+
+    void
     Coupling::declare_parameters(ParameterHandler &prm)
     {
+      ParameterEntries::declare<Coupling>(prm, "Coupling");
       prm.enter_subsection("Coupling");
-      // Couplings are registered for both dimensions under the same names.
-      prm.declare_entry("Method",
-                        "none",
-                        Patterns::Selection("none|" + CouplingRegistry<2>::names()),
-                        "How the PD and FE zones are glued: none (uncoupled) or a registered "
-                        "coupling:" +
-                          CouplingRegistry<2>::documentation() +
-                          "\nA coupling's own parameters are in the subsection of its name.");
       CouplingRegistry<2>::declare_parameters(prm);
-      prm.declare_entry("Overlap region",
-                        "",
-                        Patterns::Anything(),
-                        "Boxes 'lower : upper ; ...' [m] where both zones live and alpha "
-                        "rises linearly from 0 (edge on the PD region) to 1 (edge on the FE "
-                        "region). Peridynamics/Region is the pure PD zone.");
-      prm.declare_entry("Finite element region",
-                        "",
-                        Patterns::Anything(),
-                        "Boxes 'lower : upper ; ...' [m] of the pure FE zone (alpha = 1). The PD "
-                        "region, the overlap and this region must cover the domain.");
-      prm.declare_entry("Blending",
-                        "energy",
-                        selection_pattern(blending_names),
-                        "Where alpha enters the forces: paper (FE weight inside the stiffness "
-                        "integral, PD force weighted per node, eq. 47b and 55), energy (the "
-                        "weight inside the sums on both sides, forces from the blended "
-                        "Hamiltonian), force (nodal weights on both sides, FE force alpha_I "
-                        "(K u)_I).");
-      prm.declare_entry("Multiplier solver",
-                        "diagonal",
-                        selection_pattern(multiplier_solver_names),
-                        "How A lambda = H^T (N v* - w*) is solved: diagonal (the paper's "
-                        "row-sum diagonal of A, eq. 68) or cg (conjugate gradients to a relative "
-                        "residual of 1e-12).");
-      prm.declare_entry("Fine-scale damping",
-                        "true",
-                        Patterns::Bool(),
-                        "Damp the fine-scale velocity w - N v of the PD nodes of the overlap "
-                        "(eq. 76-80) with C_I = C v_w alpha_I^2 / L_B.");
-      prm.declare_entry("Damping constant",
-                        "30",
-                        Patterns::Double(0),
-                        "C of eq. 78 [-] (the paper's value is 30).");
-      prm.declare_entry("Damping wave speed",
-                        "0",
-                        Patterns::Double(0),
-                        "v_w of eq. 78 [m/s]; 0: the longitudinal wave speed of the material "
-                        "(plane stress or plane strain in 2D).");
-      prm.declare_entry("Damping overlap width",
-                        "0",
-                        Patterns::Double(0),
-                        "L_B of eq. 78 [m]; 0: the local width of the overlap, l1 + l2.");
-      prm.declare_entry("Minimum PD mass weight",
-                        "0.1",
-                        Patterns::Double(0, 1),
-                        "Floor of the PD mass weight: a PD node of the overlap has the mass "
-                        "max(1 - alpha_I, this) rho V, so that nodes next to the alpha = 1 edge "
-                        "keep a finite mass and the stable step stays that of the lattice [-].");
       prm.leave_subsection();
     }
 
     void
     Coupling::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Coupling");
-      method              = prm.get("Method");
-      overlap_text        = prm.get("Overlap region");
-      fe_region_text      = prm.get("Finite element region");
-      blending            = selection_value(prm.get("Blending"), blending_names);
-      multiplier_solver =
-        selection_value(prm.get("Multiplier solver"), multiplier_solver_names);
-      damping               = prm.get_bool("Fine-scale damping");
-      damping_constant      = prm.get_double("Damping constant");
-      damping_wave_speed    = prm.get_double("Damping wave speed");
-      damping_overlap_width = prm.get_double("Damping overlap width");
-      minimum_mass_weight   = prm.get_double("Minimum PD mass weight");
-      prm.leave_subsection();
+      ParameterEntries::parse(prm, "Coupling", *this);
       if (coupled() && !(minimum_mass_weight > 0))
         throw_invalid_parameter("Coupling/Minimum PD mass weight",
                                 minimum_mass_weight,

@@ -5,6 +5,7 @@
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/tensor.h>
 
+#include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
 
 #include <memory>
@@ -77,6 +78,8 @@ namespace PeriArlequin
   class WavePulseInitialCondition : public InitialCondition<dim>
   {
   public:
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void

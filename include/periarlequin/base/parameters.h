@@ -2,7 +2,9 @@
 #define periarlequin_base_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,16 +63,134 @@ namespace PeriArlequin
     return names.front().second;
   }
 
+  /**
+   * The entries of one parameter structure, written once for declaring and for parsing: a
+   * structure lists its entries in `template <typename Entries> void entries(Entries &)`,
+   * which declare() runs on a default-constructed structure (the members' initial values
+   * are the declared defaults) and parse() on the structure being filled. The path
+   * (subsection/...) names the entries in error messages.
+   */
+  class ParameterEntries
+  {
+  public:
+    /** Declare the entries of @p Structure in subsection @p subsection. */
+    template <typename Structure>
+    static void
+    declare(ParameterHandler &prm, const std::string &subsection)
+    {
+      prm.enter_subsection(subsection);
+      declare_here<Structure>(prm);
+      prm.leave_subsection();
+    }
+
+    /** Declare the entries of @p Structure in the current subsection (plugins). */
+    template <typename Structure>
+    static void
+    declare_here(ParameterHandler &prm)
+    {
+      Structure        defaults;
+      ParameterEntries entries(prm, "", false);
+      defaults.entries(entries);
+    }
+
+    /** Read the entries of @p structure from the current subsection, whose path is @p path. */
+    template <typename Structure>
+    static void
+    parse_here(ParameterHandler &prm, Structure &structure, const std::string &path)
+    {
+      ParameterEntries entries(prm, path, true);
+      structure.entries(entries);
+    }
+
+    /**
+     * Read the entries of @p structure from subsection @p subsection (inside the current
+     * subsection, whose path @p parent_path, "A/B/", is for error messages).
+     */
+    template <typename Structure>
+    static void
+    parse(ParameterHandler  &prm,
+          const std::string &subsection,
+          Structure         &structure,
+          const std::string &parent_path = "")
+    {
+      prm.enter_subsection(subsection);
+      parse_here(prm, structure, parent_path + subsection + "/");
+      prm.leave_subsection();
+    }
+
+    /** An entry of a type deal.II converts (number, bool, string, vector of these). */
+    template <typename T>
+    void
+    add(const std::string            &name,
+        T                            &member,
+        const Patterns::PatternBase  &pattern,
+        const std::string            &documentation)
+    {
+      using Convert = Patterns::Tools::Convert<T>;
+      if (parsing)
+        member = Convert::to_value(prm.get(name), pattern);
+      else
+        prm.declare_entry(name, Convert::to_string(member, pattern), pattern, documentation);
+    }
+
+    /** An enumeration: a selection among the names of @p names. */
+    template <typename Enum>
+    void
+    add(const std::string          &name,
+        Enum                       &member,
+        const SelectionNames<Enum> &names,
+        const std::string          &documentation)
+    {
+      if (parsing)
+        member = selection_value(prm.get(name), names);
+      else
+        for (const auto &[text, value] : names)
+          if (value == member)
+            prm.declare_entry(name, text, selection_pattern(names), documentation);
+    }
+
+    /**
+     * A text entry parsed into an object at parse time by @p parse(text, path of the entry)
+     * (regions, cracks), with the default text @p default_text.
+     */
+    template <typename Parsed>
+    void
+    add_parsed(const std::string                                                    &name,
+               Parsed                                                               &member,
+               const std::string                                                    &default_text,
+               const std::function<Parsed(const std::string &, const std::string &)> &parse,
+               const std::string                                                    &documentation)
+    {
+      if (parsing)
+        member = parse(prm.get(name), path + name);
+      else
+        prm.declare_entry(name, default_text, Patterns::Anything(), documentation);
+    }
+
+  private:
+    ParameterEntries(ParameterHandler &prm, const std::string &path, const bool parsing)
+      : prm(prm)
+      , path(path)
+      , parsing(parsing)
+    {}
+
+    ParameterHandler &prm;
+    const std::string path;
+    const bool        parsing;
+  };
+
   namespace Parameters
   {
     /** A box domain meshed by a subdivided hyper-rectangle. */
     struct Geometry
     {
-      std::vector<double>       lower_corner;
-      std::vector<double>       upper_corner;
-      std::vector<unsigned int> subdivisions;
-      unsigned int              global_refinements;
+      std::vector<double>       lower_corner       = {0, 0};
+      std::vector<double>       upper_corner       = {1, 1};
+      std::vector<unsigned int> subdivisions       = {10, 10};
+      unsigned int              global_refinements = 0;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void
@@ -91,11 +211,13 @@ namespace PeriArlequin
     /** Isotropic linear elastic material shared by the FE and PD zones. */
     struct Material
     {
-      double      youngs_modulus;
-      double      poissons_ratio;
-      double      density;
-      PlanarModel planar_model;
+      double      youngs_modulus = 69e9;
+      double      poissons_ratio = 0.3;
+      double      density        = 2700;
+      PlanarModel planar_model   = PlanarModel::plane_stress;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void
@@ -121,8 +243,10 @@ namespace PeriArlequin
     /** The finite-element discretisation of the classical zone. */
     struct FiniteElements
     {
-      unsigned int degree;
+      unsigned int degree = 1;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void
@@ -132,11 +256,13 @@ namespace PeriArlequin
     /** Explicit time stepping. */
     struct Time
     {
-      double time_step;
-      double end_time;
+      double time_step = 1e-7;
+      double end_time  = 1e-5;
       /** Power iterations allowed for the estimate of the largest eigenvalue of M^-1 K. */
-      unsigned int stability_iterations;
+      unsigned int stability_iterations = 200;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void
@@ -146,17 +272,22 @@ namespace PeriArlequin
     /** What is written, where, and how often. */
     struct Output
     {
-      std::string  directory;
-      std::string  base_name;
-      unsigned int output_interval;
-      unsigned int energy_interval;
-      double       progress_interval;
-      bool         print_timing;
-      /** Segment "x0, y0 : x1, y1" along which displacements are sampled ("" for none). */
-      std::string  sample_line;
-      /** Boxes whose PD energies are recorded as the pure PD zone's ("" : the PD region). */
-      std::string  monitor_region;
+      std::string  directory         = "output";
+      std::string  base_name         = "solution";
+      unsigned int output_interval   = 100;
+      unsigned int energy_interval   = 1;
+      double       progress_interval = 5;
+      bool         print_timing      = true;
+      /**
+       * Segment "x0, y0 : x1, y1" along which displacements are sampled ("" for none), and
+       * boxes whose PD energies are recorded as the pure PD zone's ("": the PD region). Kept
+       * as text because this structure does not know the dimension: the Simulator parses
+       * them at construction, so --check validates them.
+       */
+      std::string  sample_line, monitor_region;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void

@@ -70,6 +70,8 @@ namespace PeriArlequin
       bool
       coupled() const;
 
+      void
+      entries(ParameterEntries &entries);
       static void
       declare_parameters(ParameterHandler &prm);
       void

@@ -31,6 +31,10 @@ namespace PeriArlequin
       bool                                            prescribes_velocity = false;
       ComponentMask                                   components;
       std::unique_ptr<Functions::ParsedFunction<dim>> function;
+
+      /** Region and Type (Components and Function have helpers shared with the FE zone). */
+      void
+      entries(ParameterEntries &entries);
     };
 
     /** The peridynamic zone: where, how fine, which model, fracture, particle conditions. */
@@ -40,17 +44,20 @@ namespace PeriArlequin
       static constexpr unsigned int n_prescribed_regions = 4;
 
       Region<dim>                 region;
-      double                      lattice_spacing;
-      double                      horizon_factor;
-      std::string                 material_model;
-      bool                        fracture;
+      double                      lattice_spacing = 0.0025;
+      double                      horizon_factor  = 3.015;
+      std::string                 material_model  = "LPS";
+      bool                        fracture        = false;
       /** The registered fracture criterion used when fracture is on. */
-      std::string                 fracture_criterion;
-      double                      energy_release_rate;
-      double                      critical_stretch;
+      std::string                 fracture_criterion  = "critical stretch";
+      double                      energy_release_rate = 0;
+      double                      critical_stretch    = 0;
       std::vector<PreCrack<dim>>  pre_cracks;
       Region<dim>                 no_fail_region;
       std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
+
+      void
+      entries(ParameterEntries &entries);
 
       double
       horizon() const;
