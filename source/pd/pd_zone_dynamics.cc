@@ -12,6 +12,13 @@ namespace PeriArlequin
   PDZone<dim>::compute_internal_forces()
   {
     update_ghost_displacements();
+    evaluate_model();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::evaluate_model()
+  {
     model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
     if (model->n_particle_scalars() > 0)
       ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
@@ -52,11 +59,7 @@ namespace PeriArlequin
     update_ghost_displacements();
     if (fracture)
       fracture->break_bonds(bonds, state.displacements());
-    model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
-    if (model->n_particle_scalars() > 0)
-      ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
-    model->compute_forces(
-      bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
+    evaluate_model();
 
     const double   rho = material.density, volume = particle_volume();
     const auto     x = ghosts.reference_positions();

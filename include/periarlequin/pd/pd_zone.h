@@ -249,6 +249,9 @@ namespace PeriArlequin
     compute_blending_weights();
     void
     set_initial_state();
+    /** Model scalars (owned, then ghosts) and forces of the current displacements. */
+    void
+    evaluate_model();
 
     parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Peridynamics<dim>       &parameters;
