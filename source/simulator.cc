@@ -148,7 +148,7 @@ namespace PeriArlequin
         if (blending)
           pd_zone->set_blending([this](const Point<dim> &x) { return blending->value(x); },
                                 coupling_parameters.blending == Parameters::Blending::energy,
-                                coupling_parameters.minimum_mass_weight);
+                                coupling_parameters.minimum_pd_weight);
         // Balance particles x family size (and FE cells) across ranks before DoFs exist.
         triangulation.signals.weight.connect(
           [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -222,6 +222,11 @@ namespace PeriArlequin
         pcout << "  Arlequin coupling: " << n_overlap << " PD nodes in the overlap, "
               << n_slaves << " slave particles, " << coupling->n_multipliers()
               << " multipliers" << std::endl;
+        if (pd_parameters.fracture && coupling_parameters.blending != Parameters::Blending::force)
+          pcout << "  Note: with fracture, prefer 'Coupling/Blending = force': the ghost forces "
+                   "of the other blendings stretch the bonds next to the slaves up to twice "
+                   "as far as the FE field does (tests/coupling/overlap_stretch)."
+                << std::endl;
       }
     setup_done = true;
   }
@@ -442,6 +447,20 @@ namespace PeriArlequin
   Simulator<dim>::get_monitor_region() const
   {
     return monitor_region;
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::get_n_steps() const
+  {
+    return n_steps;
+  }
+
+  template <int dim>
+  const Parameters::Output &
+  Simulator<dim>::get_output_parameters() const
+  {
+    return output_parameters;
   }
 
   template <int dim>

@@ -89,6 +89,11 @@ namespace PeriArlequin
     /** The number of steps taken. */
     unsigned int
     get_step_number() const;
+    /** The number of steps of the run (Time/End time over Time/Time step). */
+    unsigned int
+    get_n_steps() const;
+    const Parameters::Output &
+    get_output_parameters() const;
     const ProblemData<dim> &
     get_problem_data() const;
     const EnergyHistory &

@@ -61,12 +61,15 @@ namespace PeriArlequin
                   damping_overlap_width,
                   Patterns::Double(0),
                   "L_B of eq. 78 [m]; 0: the local width of the overlap, l1 + l2.");
-      entries.add("Minimum PD mass weight",
-                  minimum_mass_weight,
+      entries.add("Minimum PD weight",
+                  minimum_pd_weight,
                   Patterns::Double(0, 1),
-                  "Floor of the PD mass weight: a PD node of the overlap has the mass "
-                  "max(1 - alpha_I, this) rho V, so that nodes next to the alpha = 1 edge "
-                  "keep a finite mass and the stable step stays that of the lattice [-].");
+                  "PD nodes whose weight 1 - alpha is below this follow the FE field as "
+                  "slaves, their mass added to the FE nodes; every other PD node of the "
+                  "overlap has the mass (1 - alpha) rho V, in proportion to its stiffness, so "
+                  "its own motion is that of the lattice. Nodes next to the alpha = 1 edge "
+                  "with a tiny weight but free would lag behind the FE field and stretch "
+                  "their bonds to the slaves [-].");
     }
 
     void
@@ -82,9 +85,9 @@ namespace PeriArlequin
     Coupling::parse_parameters(ParameterHandler &prm)
     {
       ParameterEntries::parse(prm, "Coupling", *this);
-      if (coupled() && !(minimum_mass_weight > 0))
-        throw_invalid_parameter("Coupling/Minimum PD mass weight",
-                                minimum_mass_weight,
+      if (coupled() && !(minimum_pd_weight > 0))
+        throw_invalid_parameter("Coupling/Minimum PD weight",
+                                minimum_pd_weight,
                                 "a value in (0, 1] when the zones are coupled");
     }
 

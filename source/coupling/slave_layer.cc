@@ -15,6 +15,13 @@ namespace PeriArlequin
     interpolation.reinit(fe, pd, particles);
     fe.initialize_vector(scratch);
     forces.resize(particles.size());
+
+    // The slaves' masses move with the FE field: N^T m, the row sums of N^T M N.
+    for (unsigned int r = 0; r < particles.size(); ++r)
+      for (unsigned int d = 0; d < dim; ++d)
+        forces[r][d] = pd.particle_mass(particles[r]);
+    interpolation.Tvmult(scratch, forces);
+    fe.add_lumped_mass(scratch);
   }
 
   template <int dim>

@@ -212,14 +212,15 @@ namespace PeriArlequin
     auto &body_force = data.body_force;
     body_force.set_time(time);
 
-    // The body force is blended like the mass; tractions act on the FE boundary as given.
+    // Loads are blended like the mass, alpha (the PD zone takes 1 - alpha): the body force
+    // and the tractions on faces in an overlap.
     const auto add_load =
-      [&](const FEValuesBase<dim> &values, Function<dim> &function, const bool blended) {
+      [&](const FEValuesBase<dim> &values, Function<dim> &function) {
         for (const unsigned int q : values.quadrature_point_indices())
           {
             const Point<dim> &x = values.quadrature_point(q);
             function.vector_value(x, load);
-            const double JxW = (blended ? mass_weight(x) : 1.) * values.JxW(q);
+            const double JxW = mass_weight(x) * values.JxW(q);
             for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
               {
                 const unsigned int c = values.get_fe().system_to_component_index(i).first;
@@ -236,7 +237,7 @@ namespace PeriArlequin
         if (data.has_body_force)
           {
             hp_fe_values.reinit(cell);
-            add_load(hp_fe_values.get_present_fe_values(), body_force, true);
+            add_load(hp_fe_values.get_present_fe_values(), body_force);
           }
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f))
@@ -246,7 +247,7 @@ namespace PeriArlequin
                 continue;
               condition.function->set_time(time);
               hp_face_values.reinit(cell, f);
-              add_load(hp_face_values.get_present_fe_values(), *condition.function, false);
+              add_load(hp_face_values.get_present_fe_values(), *condition.function);
             }
         dof_indices.resize(cell_force.size());
         cell->get_dof_indices(dof_indices);
@@ -379,6 +380,13 @@ namespace PeriArlequin
   FEZone<dim>::get_dof_handler() const
   {
     return dof_handler;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::add_lumped_mass(const VectorType &extra)
+  {
+    mass.add(1., extra);
   }
 
   template <int dim>

@@ -48,7 +48,6 @@ namespace PeriArlequin
               parameters.lattice_spacing)
   {
     const double dx = parameters.lattice_spacing;
-    Box<dim> domain;
     for (unsigned int d = 0; d < dim; ++d)
       {
         domain.lower[d] = geometry.lower_corner[d];
@@ -158,7 +157,44 @@ namespace PeriArlequin
     model_scalars.assign(n_total * model->n_particle_scalars(), 0.);
     applied_force.assign(n_owned, Tensor<1, dim>());
     prescribed.reinit(ghosts.reference_positions(), n_owned);
-    tracks_work = problem_data->has_body_force || !prescribed.empty(communicator);
+    find_boundary_layers();
+    tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
+                  !prescribed.empty(communicator);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::find_boundary_layers()
+  {
+    // The first layer of lattice sites along a face lies within dx of it, whatever the
+    // alignment of the lattice with the face.
+    const double dx = parameters.lattice_spacing;
+    const auto   x  = ghosts.reference_positions();
+    traction_layer.clear();
+    for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
+      {
+        const BoundaryType type      = problem_data->boundary_conditions[b].type;
+        const unsigned int direction = b / 2;
+        bool               fixed_particle = false;
+        for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+          {
+            const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
+                                                   domain.upper[direction] - x[i][direction];
+            if (distance >= dx * (1. - 1e-12))
+              continue;
+            if (type == BoundaryType::traction)
+              traction_layer.emplace_back(i, b);
+            else if (type == BoundaryType::displacement && alpha[i] < 1.)
+              fixed_particle = true;
+          }
+        if (Utilities::MPI::logical_or(fixed_particle, communicator))
+          throw_invalid_parameter("Boundary conditions/Boundary " + std::to_string(b) + "/Type",
+                                  "displacement",
+                                  "'free' or 'traction' on a face that PD particles (other "
+                                  "than slaves) touch: a displacement there acts on FE nodes "
+                                  "only; prescribe the particles' motion with "
+                                  "'Peridynamics/Prescribed region N' instead");
+      }
   }
 
   template <int dim>
@@ -283,9 +319,9 @@ namespace PeriArlequin
     slave.resize(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        slave[i]        = alpha[i] >= 1.;
+        slave[i]        = 1. - alpha[i] < minimum_weight;
         force_weight[i] = energy_blending ? 1. : 1. - alpha[i];
-        mass_weight[i]  = std::max(1. - alpha[i], minimum_mass_weight);
+        mass_weight[i]  = 1. - alpha[i];
       }
   }
 
@@ -395,6 +431,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  const Parameters::Peridynamics<dim> &
+  PDZone<dim>::get_parameters() const
+  {
+    return parameters;
+  }
+
+  template <int dim>
   double
   PDZone<dim>::particle_volume() const
   {
@@ -419,11 +462,11 @@ namespace PeriArlequin
   void
   PDZone<dim>::set_blending(const WeightFunction &alpha_function,
                             const bool            energy,
-                            const double          minimum_weight)
+                            const double          minimum_pd_weight)
   {
     blending_weight     = alpha_function;
     energy_blending     = energy;
-    minimum_mass_weight = minimum_weight;
+    minimum_weight      = minimum_pd_weight;
   }
 
   template <int dim>

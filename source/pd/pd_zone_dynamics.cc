@@ -53,34 +53,53 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::compute_accelerations(const double time)
+  PDZone<dim>::compute_load_densities(const double time)
   {
     const ProblemData<dim> &data = *problem_data;
+    const auto              x    = ghosts.reference_positions();
+    load_density.assign(ghosts.n_owned(), Tensor<1, dim>());
+    Vector<double> value(dim);
+    const auto     add = [&](Function<dim> &load, const double scale, const unsigned int i) {
+      load.vector_value(x[i], value);
+      for (unsigned int d = 0; d < dim; ++d)
+        load_density[i][d] += scale * value(d);
+    };
+    if (data.has_body_force)
+      {
+        data.body_force.set_time(time);
+        for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+          add(data.body_force, 1., i);
+      }
+    // A traction t on the face carried by its first layer of particles: t dx^(dim-1) on a
+    // particle of volume dx^dim.
+    for (const auto &[i, b] : traction_layer)
+      {
+        Function<dim> &traction = *data.boundary_conditions[b].function;
+        traction.set_time(time);
+        add(traction, 1. / parameters.lattice_spacing, i);
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::compute_accelerations(const double time)
+  {
     update_ghost_displacements();
     if (fracture)
       fracture->break_bonds(bonds, state.displacements());
     evaluate_model();
+    compute_load_densities(time);
 
-    const double   rho = material.density, volume = particle_volume();
-    const auto     x = ghosts.reference_positions();
-    const auto     a = state.accelerations();
-    Vector<double> body(dim);
-    auto          &body_force = data.body_force;
-    body_force.set_time(time);
+    const double rho = material.density, volume = particle_volume();
+    const auto   a   = state.accelerations();
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
-        Tensor<1, dim> b;
-        if (data.has_body_force)
-          {
-            body_force.vector_value(x[i], body);
-            for (unsigned int d = 0; d < dim; ++d)
-              b[d] = body(d);
-          }
+        // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
+        const Tensor<1, dim> b = (1. - alpha[i]) * load_density[i];
         // A slave's acceleration is that of the FE field, set by the coupling.
         if (!slave[i])
-          a[i] = (force_weight[i] * force_density[i] + (1. - alpha[i]) * b) /
-                 (rho * mass_weight[i]);
-        applied_force[i] = (1. - alpha[i]) * volume * b;
+          a[i] = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
+        applied_force[i] = volume * b;
       }
     prescribed.restore_accelerations(state);
     // Load plus support reaction of a prescribed component: m a - f V.

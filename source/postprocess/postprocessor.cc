@@ -53,6 +53,39 @@ namespace PeriArlequin
     history.add_value("multiplier_iterations", coupling ? coupling->last_solver_iterations() : 0.);
   }
 
+  template <int dim>
+  void
+  BondStretches<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const PDZone<dim> *pd = simulator.get_pd_zone();
+    double largest[3] = {0, 0, 0};
+    if (pd)
+      {
+        const BondFamilies<dim> &bonds = pd->get_bonds();
+        const auto               u     = pd->get_state().displacements();
+        const auto               alpha = pd->blending_weights();
+        for (unsigned int i = 0; i < bonds.n_owned; ++i)
+          for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+            {
+              if (bonds.state[n] == BondFamilies<dim>::broken)
+                continue;
+              const unsigned int j     = bonds.neighbor[n];
+              const auto        &entry = bonds.stencil[bonds.stencil_index[n]];
+              const double       stretch =
+                BondFamilies<dim>::extension(entry, u[j] - u[i]).first / entry.length;
+              const double       a     = std::max(alpha[i], alpha[j]);
+              const unsigned int part  = a >= 1. ? 2 : (a > 0. ? 1 : 0);
+              largest[part]            = std::max(largest[part], stretch);
+            }
+        Utilities::MPI::max(ArrayView<const double>(largest, 3),
+                            pd->get_communicator(),
+                            ArrayView<double>(largest, 3));
+      }
+    history.add_value("max_stretch_pure_pd", largest[0]);
+    history.add_value("max_stretch_overlap", largest[1]);
+    history.add_value("max_stretch_slave_layer", largest[2]);
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
   template class EnergyPostprocessor<2>;
@@ -61,6 +94,8 @@ namespace PeriArlequin
   template class MonitorRegionEnergies<3>;
   template class ConstraintResiduals<2>;
   template class ConstraintResiduals<3>;
+  template class BondStretches<2>;
+  template class BondStretches<3>;
   template class PluginRegistry<Postprocessor<2>>;
   template class PluginRegistry<Postprocessor<3>>;
 
@@ -72,6 +107,10 @@ namespace PeriArlequin
     MonitorRegionEnergies,
     "monitor region energies",
     "kinetic and strain energy of the PD particles in Output/Monitor region")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(
+    BondStretches,
+    "bond stretches",
+    "largest bond stretch in the pure PD zone, the overlap and the slave layer")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ConstraintResiduals,
     "constraint residuals",

@@ -238,6 +238,58 @@ namespace PeriArlequinTests
                   residuals.second / (motion.v_max * rows),
                   1e-12);
   }
+  /**
+   * A glass plate [0, 0.1] x [0, 0.04] m (E = 72 GPa, nu = 0.22, rho = 2440, plane stress:
+   * the branching benchmark's material) pulled by a traction of @p stress [Pa] applied at
+   * t = 0 on its top and bottom edges. PD lattice @p dx with horizon 3.2 dx; FE cells
+   * @p cell; with @p coupled the PD region is the strip |y - 0.02| <= @p half_strip, with
+   * overlaps @p overlap wide above and below it and FE beyond (weak coupling, @p blending,
+   * fine-scale damping), otherwise PD everywhere. @p extra is appended (e.g. fracture and
+   * pre-cracks).
+   */
+  inline std::string
+  glass_plate_case(const bool         coupled,
+                   const double       dx,
+                   const double       cell,
+                   const double       half_strip,
+                   const double       overlap,
+                   const double       stress,
+                   const double       time_step,
+                   const double       end_time,
+                   const std::string &blending = "force",
+                   const std::string &extra    = "")
+  {
+    std::ostringstream text;
+    const double       a = 0.02 - half_strip, b = 0.02 + half_strip;
+    text << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
+         << "  set Subdivisions = " << std::lround(0.1 / cell) << ", " << std::lround(0.04 / cell)
+         << "\nend\n"
+         << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
+         << "  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
+         << "subsection Peridynamics\n  set Region = 0, " << (coupled ? a : 0.) << " : 0.1, "
+         << (coupled ? b : 0.04) << "\n  set Lattice spacing = " << dx
+         << "\n  set Horizon factor = 3.2\nend\n"
+         << "subsection Boundary conditions\n";
+    for (const unsigned int id : {2, 3})
+      text << "  subsection Boundary " << id
+           << "\n    set Type = traction\n    subsection Function\n"
+           << "      set Function expression = 0; " << (id == 2 ? -stress : stress)
+           << "\n    end\n  end\n";
+    text << "end\n";
+    if (coupled)
+      {
+        std::ostringstream overlap_text, fe_text;
+        overlap_text << "0, " << a - overlap << " : 0.1, " << a << " ; 0, " << b << " : 0.1, "
+                     << b + overlap;
+        fe_text << "0, 0 : 0.1, " << a - overlap << " ; 0, " << b + overlap << " : 0.1, 0.04";
+        text << coupling_text("weak", blending, "diagonal", true, overlap_text.str(), fe_text.str());
+      }
+    text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
+         << "\nend\n"
+         << quiet_output() << extra;
+    return text.str();
+  }
 } // namespace PeriArlequinTests
 
 #endif

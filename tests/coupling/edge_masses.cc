@@ -6,9 +6,16 @@
 //    inside the pure PD zone carry no DoFs at all (FE_Nothing cells). Checked for every node:
 //    mass / (that of a pure-FE node of the same row) = int alpha N_I / int N_I, written out
 //    for Q1 with alpha linear (tolerance 1e-12: exact integrals of polynomials).
-//  - PD: the mass of a non-slave particle is max(1 - alpha_I, 0.1) rho V (the floor, the
-//    `Minimum PD mass weight`, keeps finite masses next to the alpha = 1 edge). Checked
-//    against a pure-PD particle's mass (tolerance 1e-12), with the floor active on some.
+//    Slaves (particles with 1 - alpha below `Minimum PD weight` = 0.1, here those with
+//    0.49 < |x| < 0.5 that carry a mass, and the massless ones beyond) move with the FE field
+//    and add their masses to the FE nodes: N_I(x_s) (1 - alpha_s) rho V, with N_I the
+//    bilinear hat of node I, written out here from the lattice.
+//  - PD: the mass of a non-slave particle is (1 - alpha_I) rho V with 1 - alpha_I >= 0.1
+//    (nothing is floored, so a free particle's mass matches its stiffness). Checked against
+//    a pure-PD particle's mass (tolerance 1e-12).
+//  - Mass is conserved: FE plus PD masses of one component = rho x plate area (the lattice
+//    sums of the piecewise linear 1 - alpha are exact, its kinks lie on lattice-cell edges;
+//    tolerance 1e-12).
 //  - The coupled stable step is not below the pure-PD strip's: no vanishing mass lowers it
 //    (bound 0.95 of the pure-PD step; measured ratio reported).
 
@@ -58,7 +65,17 @@ main(int argc, char **argv)
                                 (x < 1.2 - 1e-12 ? weighted_share(x, h, x) : 0.)) /
                                h;
         const double row = (std::abs(std::abs(y) - 0.04) < 1e-12) ? 0.5 : 1.;
-        const double expected = share_x * row * full_row_mass;
+        double       expected = share_x * row * full_row_mass;
+        // The slaves with a mass: lattice sites (5 mm, from the corner (-1.2, -0.04)) with
+        // 0.49 < |x| < 0.5.
+        for (const double xs : {-0.4975, -0.4925, 0.4925, 0.4975})
+          for (unsigned int j = 0; j < 16; ++j)
+            {
+              const double ys    = -0.04 + 0.0025 + 0.005 * j;
+              const double hat_x = std::max(0., 1. - std::abs(xs - x) / h);
+              const double hat_y = std::max(0., 1. - std::abs(ys - y) / h);
+              expected += hat_x * hat_y * (0.5 - std::abs(xs)) / 0.1 * 2700 * 0.005 * 0.005;
+            }
         fe_error = std::max(fe_error,
                             std::abs(fe.lumped_mass().local_element(dofs[k]) - expected) /
                               full_row_mass);
@@ -68,26 +85,43 @@ main(int argc, char **argv)
     fe_error = Utilities::MPI::max(fe_error, MPI_COMM_WORLD);
     report("smallest FE mass share of an overlap node (1/30 at the alpha = 0 edge)",
            smallest_share);
-    check_below("FE lumped masses vs int alpha rho N_I, relative to a pure-FE node",
+    check_below("FE lumped masses vs int alpha rho N_I + the slaves' N_I m_s, relative to a "
+                "pure-FE node",
                 fe_error,
                 1e-12);
 
     // PD
     auto        &pd        = *simulator->get_pd_zone();
     const double full_mass = 2700 * 0.005 * 0.005;
-    double       pd_error  = 0;
-    unsigned int floored   = 0;
+    double       pd_error = 0, smallest_free_weight = 1, pd_total = 0;
+    unsigned int slaves_with_mass = 0;
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
-      if (!pd.is_slave(i))
-        {
-          const double weight = std::max(1. - pd.blending_weights()[i], 0.1);
-          pd_error = std::max(pd_error, std::abs(pd.particle_mass(i) / full_mass - weight));
-          floored += (1. - pd.blending_weights()[i] < 0.1);
-        }
-    report("PD particles on the mass floor", Utilities::MPI::sum(floored, MPI_COMM_WORLD));
-    check_above("PD particles on the mass floor", Utilities::MPI::sum(floored, MPI_COMM_WORLD), 0);
-    check_below("PD masses vs max(1 - alpha, 0.1) rho V, relative",
+      {
+        const double weight = 1. - pd.blending_weights()[i];
+        if (pd.is_slave(i))
+          slaves_with_mass += (weight > 0);
+        else
+          {
+            pd_error = std::max(pd_error, std::abs(pd.particle_mass(i) / full_mass - weight));
+            smallest_free_weight = std::min(smallest_free_weight, weight);
+            pd_total += pd.particle_mass(i);
+          }
+      }
+    check_above("slaves with a mass", Utilities::MPI::sum(slaves_with_mass, MPI_COMM_WORLD), 0);
+    check_above("smallest weight 1 - alpha of a free PD particle",
+                Utilities::MPI::min(smallest_free_weight, MPI_COMM_WORLD),
+                0.1 - 1e-12);
+    check_below("PD masses vs (1 - alpha) rho V, relative",
                 Utilities::MPI::max(pd_error, MPI_COMM_WORLD),
+                1e-12);
+
+    double fe_total = 0;
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      if (components[k] == 0)
+        fe_total += fe.lumped_mass().local_element(dofs[k]);
+    const double total = Utilities::MPI::sum(fe_total + pd_total, MPI_COMM_WORLD);
+    check_below("FE + PD mass vs rho x area, relative",
+                std::abs(total / (2700 * 2.4 * 0.08) - 1.),
                 1e-12);
 
     auto reference = make_simulator<2>(text("none", true));

@@ -64,7 +64,7 @@ namespace PeriArlequin
       double           damping_constant      = 30.;
       double           damping_wave_speed    = 0.;
       double           damping_overlap_width = 0.;
-      double           minimum_mass_weight   = 0.1;
+      double           minimum_pd_weight     = 0.1;
 
       /** Are the zones coupled? */
       bool

@@ -10,9 +10,10 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * The PD slaves: owned particles with alpha = 1. They complete the families of the
-   * weighted particles and follow the FE field, d = N u (and w = N v, b = N a), so their
-   * blended forces act on the FE nodes through N^T (energy blending).
+   * The PD slaves: owned particles with a weight 1 - alpha below Coupling/Minimum PD weight.
+   * They complete the families of the weighted particles and follow the FE field, d = N u
+   * (and w = N v, b = N a), so their blended forces act on the FE nodes through N^T (energy
+   * blending) and their masses (1 - alpha) rho V join the lumped FE masses (N^T m).
    */
   template <int dim>
   class SlaveLayer
@@ -20,7 +21,7 @@ namespace PeriArlequin
   public:
     using VectorType = LinearAlgebra::distributed::Vector<double>;
 
-    /** The interpolation rows of the slaves of @p pd_zone. */
+    /** The interpolation rows of the slaves of @p pd_zone; adds their masses to @p fe_zone. */
     void
     initialize(FEZone<dim> &fe_zone, PDZone<dim> &pd_zone);
 

@@ -170,6 +170,9 @@ namespace PeriArlequin
     get_dof_handler() const;
     const VectorType &
     lumped_mass() const;
+    /** Add @p extra to the lumped mass (a coupling lumps masses that move with the nodes). */
+    void
+    add_lumped_mass(const VectorType &extra);
     const Parameters::Material &
     get_material() const;
     types::global_dof_index

@@ -72,17 +72,17 @@ namespace PeriArlequin
            const SiteFilter                          &extent = SiteFilter());
 
     /**
-     * Arlequin weights, set before setup(): particle I has the mass max(1 - alpha_I,
-     * @p minimum_mass_weight) rho V; its strain energy enters with the weight 1 - alpha_I,
-     * inside the bond sums (@p energy_blending: the forces are minus the derivative of the
-     * blended energy) or on the node (the force (1 - alpha_I) f_I, eq. 55). Particles with
-     * alpha = 1 are slaves: they complete the families of their neighbours and follow the FE
-     * field, set by the coupling.
+     * Arlequin weights, set before setup(): particle I has the mass (1 - alpha_I) rho V; its
+     * strain energy enters with the weight 1 - alpha_I, inside the bond sums
+     * (@p energy_blending: the forces are minus the derivative of the blended energy) or on
+     * the node (the force (1 - alpha_I) f_I, eq. 55). Particles with 1 - alpha below
+     * @p minimum_pd_weight are slaves: they complete the families of their neighbours and
+     * follow the FE field, set by the coupling, which also carries their mass.
      */
     void
     set_blending(const WeightFunction &alpha,
                  const bool            energy_blending,
-                 const double          minimum_mass_weight);
+                 const double          minimum_pd_weight);
 
     /**
      * Weight of a cell for load balancing: 1000 (base) plus the bond count of the lattice
@@ -155,6 +155,8 @@ namespace PeriArlequin
     get_critical_stretch() const;
     MPI_Comm
     get_communicator() const;
+    const Parameters::Peridynamics<dim> &
+    get_parameters() const;
 
     /**
      * Copy displacement, velocity, damage and the model's particle scalars into the owned
@@ -189,7 +191,7 @@ namespace PeriArlequin
     /** Blending weight alpha of owned and ghost particles. */
     ArrayView<const double>
     blending_weights() const;
-    /** Is owned particle @p i a slave (alpha = 1)? */
+    /** Is owned particle @p i a slave (1 - alpha below Coupling/Minimum PD weight)? */
     bool
     is_slave(const unsigned int i) const;
     const BondFamilies<dim> &
@@ -198,7 +200,7 @@ namespace PeriArlequin
     /** Lattice cell volume dx^dim [m^dim]. */
     double
     particle_volume() const;
-    /** Mass of owned particle @p i, weighted and floored [kg]. */
+    /** Mass of owned particle @p i, (1 - alpha_I) rho V [kg]. */
     double
     particle_mass(const unsigned int i) const;
     /** Blended internal force on owned particle @p i [N] (a slave's feeds the FE nodes). */
@@ -247,6 +249,16 @@ namespace PeriArlequin
     check_horizon_covered() const;
     void
     compute_blending_weights();
+    /**
+     * The particles within one lattice spacing of a face with a traction, which carry it as
+     * the force density t / dx; a displacement condition on a face that non-slave particles
+     * touch is an error (Peridynamics/Prescribed region moves particles).
+     */
+    void
+    find_boundary_layers();
+    /** Body force and boundary tractions per unit volume on owned particles at @p time. */
+    void
+    compute_load_densities(const double time);
     void
     set_initial_state();
     /** Model scalars (owned, then ghosts) and forces of the current displacements. */
@@ -266,9 +278,10 @@ namespace PeriArlequin
     std::unique_ptr<FractureCriterion<dim>>    fracture;
     PrescribedParticles<dim>                   prescribed;
     SiteFilter                                 extent;
+    Box<dim>                                   domain;
     WeightFunction                             blending_weight;
     bool                                       energy_blending     = false;
-    double                                     minimum_mass_weight = 1.;
+    double                                     minimum_weight      = 1.;
     const ProblemData<dim>                    *problem_data        = nullptr;
     Lattice<dim>                               lattice;
     double                                     time_step           = 0;
@@ -281,7 +294,11 @@ namespace PeriArlequin
     std::vector<double>         alpha, state_weight, force_weight, mass_weight;
     std::vector<unsigned char>  slave;
 
-    /** Applied force (body force plus support reactions) of owned particles [N]. */
+    /** (owned particle, boundary id) of the particles that carry a boundary traction. */
+    std::vector<std::pair<unsigned int, unsigned int>> traction_layer;
+    /** Body force plus boundary tractions per unit volume, owned particles [N/m^dim]. */
+    std::vector<Tensor<1, dim>> load_density;
+    /** Applied force (loads plus support reactions) of owned particles [N]. */
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
     double                      work        = 0;
     bool                        tracks_work = false;

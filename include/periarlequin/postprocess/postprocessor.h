@@ -80,6 +80,21 @@ namespace PeriArlequin
     void
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
   };
+
+  /**
+   * The largest stretch of the intact bonds [-] in three parts of the PD zone: pure PD (both
+   * ends with alpha = 0), overlap (an end with 0 < alpha < 1, no slave) and slave layer (an
+   * end a slave). A continuum under a load of nominal strain eps has stretches up to about
+   * eps (twice that right after a sudden load); a coupling that lets the overlap move on
+   * its own shows there first.
+   */
+  template <int dim>
+  class BondStretches : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
 } // namespace PeriArlequin
 
 /**
