@@ -25,6 +25,10 @@ namespace PeriArlequin
           alpha[dofs[k]] = blending.value(points[k]);
         fe_zone.set_nodal_force_weights(alpha);
       }
+    fe_zone.set_additional_load(
+      [&slaves](const double time, LinearAlgebra::distributed::Vector<double> &force) {
+        slaves.add_loads(time, force);
+      });
     if (parameters.blending == Parameters::Blending::energy)
       fe_zone.set_interface_force(
         [&slaves](LinearAlgebra::distributed::Vector<double> &force) {

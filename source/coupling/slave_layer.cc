@@ -59,6 +59,16 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  SlaveLayer<dim>::add_loads(const double time, VectorType &force)
+  {
+    for (unsigned int r = 0; r < particles.size(); ++r)
+      forces[r] = pd_zone->blended_load(particles[r], time);
+    interpolation.Tvmult(scratch, forces);
+    force.add(1., scratch);
+  }
+
+  template <int dim>
   types::global_dof_index
   SlaveLayer<dim>::n_global_slaves() const
   {

@@ -120,6 +120,8 @@ namespace PeriArlequin
     if (add_interface_force)
       add_interface_force(interface_force);
     compute_external_force(*problem_data, t, applied_force);
+    if (add_additional_load)
+      add_additional_load(t, applied_force);
 
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       state.acceleration.local_element(i) =
@@ -218,6 +220,13 @@ namespace PeriArlequin
     add_interface_force = add_force;
   }
 
+  template <int dim>
+  void
+  FEZone<dim>::set_additional_load(const std::function<void(double, VectorType &)> &add_load)
+  {
+    add_additional_load = add_load;
+  }
+
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
 #define PERIARLEQUIN_INSTANTIATE(dim)                                                        \
   template void FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);      \
@@ -236,7 +245,9 @@ namespace PeriArlequin
     const;                                                                                   \
   template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);           \
   template void FEZone<dim>::set_interface_force(                                            \
-    const std::function<void(FEZone<dim>::VectorType &)> &);
+    const std::function<void(FEZone<dim>::VectorType &)> &);                                 \
+  template void FEZone<dim>::set_additional_load(                                            \
+    const std::function<void(double, FEZone<dim>::VectorType &)> &);
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

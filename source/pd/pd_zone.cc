@@ -170,7 +170,7 @@ namespace PeriArlequin
     // alignment of the lattice with the face.
     const double dx = parameters.lattice_spacing;
     const auto   x  = ghosts.reference_positions();
-    traction_layer.clear();
+    traction_faces.assign(ghosts.n_owned(), 0);
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       {
         const BoundaryType type      = problem_data->boundary_conditions[b].type;
@@ -183,7 +183,7 @@ namespace PeriArlequin
             if (distance >= dx * (1. - 1e-12))
               continue;
             if (type == BoundaryType::traction)
-              traction_layer.emplace_back(i, b);
+              traction_faces[i] |= (1u << b);
             else if (type == BoundaryType::displacement && alpha[i] < 1.)
               fixed_particle = true;
           }

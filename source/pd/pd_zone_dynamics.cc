@@ -52,32 +52,34 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  PDZone<dim>::compute_load_densities(const double time)
+  Tensor<1, dim>
+  PDZone<dim>::blended_load(const unsigned int i, const double time) const
+  {
+    return ((1. - alpha[i]) * particle_volume()) * load_density(i, time);
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  PDZone<dim>::load_density(const unsigned int i, const double time) const
   {
     const ProblemData<dim> &data = *problem_data;
-    const auto              x    = ghosts.reference_positions();
-    load_density.assign(ghosts.n_owned(), Tensor<1, dim>());
-    Vector<double> value(dim);
-    const auto     add = [&](Function<dim> &load, const double scale, const unsigned int i) {
-      load.vector_value(x[i], value);
+    const Point<dim>       &x    = ghosts.reference_positions()[i];
+    Tensor<1, dim>          density;
+    Vector<double>          value(dim);
+    const auto              add = [&](Function<dim> &load, const double scale) {
+      load.set_time(time);
+      load.vector_value(x, value);
       for (unsigned int d = 0; d < dim; ++d)
-        load_density[i][d] += scale * value(d);
+        density[d] += scale * value(d);
     };
     if (data.has_body_force)
-      {
-        data.body_force.set_time(time);
-        for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-          add(data.body_force, 1., i);
-      }
-    // A traction t on the face carried by its first layer of particles: t dx^(dim-1) on a
+      add(data.body_force, 1.);
+    // A traction t on a face is carried by its first layer of particles: t dx^(dim-1) on a
     // particle of volume dx^dim.
-    for (const auto &[i, b] : traction_layer)
-      {
-        Function<dim> &traction = *data.boundary_conditions[b].function;
-        traction.set_time(time);
-        add(traction, 1. / parameters.lattice_spacing, i);
-      }
+    for (unsigned int b = 0; traction_faces[i] >> b; ++b)
+      if (traction_faces[i] & (1u << b))
+        add(*data.boundary_conditions[b].function, 1. / parameters.lattice_spacing);
+    return density;
   }
 
   template <int dim>
@@ -88,17 +90,23 @@ namespace PeriArlequin
     if (fracture)
       fracture->break_bonds(bonds, state.displacements());
     evaluate_model();
-    compute_load_densities(time);
 
     const double rho = material.density, volume = particle_volume();
     const auto   a   = state.accelerations();
+    const bool   loaded = problem_data->has_body_force || problem_data->has_tractions();
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
+        // A slave's acceleration is that of the FE field, set by the coupling, and its load
+        // acts on the FE nodes.
+        if (slave[i])
+          {
+            applied_force[i] = Tensor<1, dim>();
+            continue;
+          }
         // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
-        const Tensor<1, dim> b = (1. - alpha[i]) * load_density[i];
-        // A slave's acceleration is that of the FE field, set by the coupling.
-        if (!slave[i])
-          a[i] = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
+        const Tensor<1, dim> b =
+          loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
+        a[i]             = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
         applied_force[i] = volume * b;
       }
     prescribed.restore_accelerations(state);

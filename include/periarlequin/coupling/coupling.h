@@ -92,7 +92,8 @@ namespace PeriArlequin
   /**
    * The FE forces of a coupled run, set as the FE zone's hooks: under force blending the FE
    * internal force is weighted per node with alpha_I, under energy blending the slaves'
-   * forces act on the FE nodes (N^T f). Shared by the couplings.
+   * forces act on the FE nodes (N^T f); under any, so do the slaves' loads. Shared by the
+   * couplings.
    */
   template <int dim>
   void

@@ -37,6 +37,13 @@ namespace PeriArlequin
     void
     add_forces(VectorType &force);
 
+    /**
+     * @p force += N^T f with f the slaves' share of the loads at @p time [N]: their masses
+     * move with the FE nodes, so do the body forces and tractions on them.
+     */
+    void
+    add_loads(const double time, VectorType &force);
+
     /** Slaves on all ranks. */
     types::global_dof_index
     n_global_slaves() const;

@@ -120,6 +120,12 @@ namespace PeriArlequin
     /** A force added to the FE nodes at every force evaluation (it adds into the vector). */
     void
     set_interface_force(const std::function<void(VectorType &)> &add_force);
+    /**
+     * A load added to the FE nodes at every force evaluation, given the time (it adds into
+     * the vector); it counts as applied force in the work.
+     */
+    void
+    set_additional_load(const std::function<void(double, VectorType &)> &add_load);
 
     /** The locally owned DoFs (local indices), their support points and components. */
     void
@@ -209,6 +215,7 @@ namespace PeriArlequin
     std::vector<double>                              prescribed_acceleration;
     std::vector<double>                              nodal_force_weights;
     std::function<void(VectorType &)>                add_interface_force;
+    std::function<void(double, VectorType &)>        add_additional_load;
     /** Whether any load or support does work (otherwise the work is not accounted). */
     bool                                             tracks_work = false;
     double                                           work        = 0;

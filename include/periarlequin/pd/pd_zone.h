@@ -206,6 +206,13 @@ namespace PeriArlequin
     /** Blended internal force on owned particle @p i [N] (a slave's feeds the FE nodes). */
     Tensor<1, dim>
     blended_force(const unsigned int i) const;
+    /**
+     * Load on owned particle @p i at @p time [N]: body force and boundary tractions (t / dx
+     * on the particles within dx of a loaded face) times (1 - alpha_I) V. A slave's load is
+     * carried by the FE nodes (SlaveLayer::add_loads()).
+     */
+    Tensor<1, dim>
+    blended_load(const unsigned int i, const double time) const;
 
     /** Cell and unit-cell location of each owned particle, in local order. */
     std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>>
@@ -256,9 +263,9 @@ namespace PeriArlequin
      */
     void
     find_boundary_layers();
-    /** Body force and boundary tractions per unit volume on owned particles at @p time. */
-    void
-    compute_load_densities(const double time);
+    /** Body force plus boundary tractions per unit volume on owned particle @p i [N/m^dim]. */
+    Tensor<1, dim>
+    load_density(const unsigned int i, const double time) const;
     void
     set_initial_state();
     /** Model scalars (owned, then ghosts) and forces of the current displacements. */
@@ -294,10 +301,8 @@ namespace PeriArlequin
     std::vector<double>         alpha, state_weight, force_weight, mass_weight;
     std::vector<unsigned char>  slave;
 
-    /** (owned particle, boundary id) of the particles that carry a boundary traction. */
-    std::vector<std::pair<unsigned int, unsigned int>> traction_layer;
-    /** Body force plus boundary tractions per unit volume, owned particles [N/m^dim]. */
-    std::vector<Tensor<1, dim>> load_density;
+    /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
+    std::vector<std::uint8_t> traction_faces;
     /** Applied force (loads plus support reactions) of owned particles [N]. */
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
     double                      work        = 0;

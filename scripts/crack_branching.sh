@@ -1,0 +1,121 @@
+#!/bin/bash
+# The crack-branching study of doc/crack_branching.md (section 6.2 of the paper, on the
+# peridynamic branching benchmark): a soda-lime glass plate (E = 72 GPa, nu = 0.22,
+# rho = 2440 kg/m^3, G0 = 3.8 J/m^2, plane stress) with a 50 mm notch along its mid-line from
+# the left edge, a traction of 2 MPa applied suddenly on the top and bottom edges, horizon
+# 1 mm (lattice 0.3125 mm, m = 3.2), run to 43 us. Runs pure PD and coupled (PD strip around
+# the crack line, overlaps of 5 FE cells above and below, FE beyond, weak coupling, force
+# blending, fine-scale damping) at FE/PD size ratios 8 and 16, on the 100 x 40 mm plate and on
+# the 100 x 120 mm plate, then prints the table and draws the figures:
+#   scripts/crack_branching.sh <build directory> <work directory> [<mpi ranks>]
+# Figures (scripts/plot_cracks.sh) and the table go to <work directory>; takes some minutes.
+set -euo pipefail
+build=$(cd "${1:?usage: crack_branching.sh <build directory> <work directory> [<mpi ranks>]}" && pwd)
+work=${2:?usage: crack_branching.sh <build directory> <work directory> [<mpi ranks>]}
+ranks=${3:-1}
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$work"
+cd "$work"
+
+dx=3.125e-4
+# case <name> <height [m]> <PD strip half width [m], 0: pure PD> <FE cell [m]> <overlap cells>
+case_file() {
+  local name=$1 height=$2 half=$3 cell=$4 layers=$5
+  local mid nx ny
+  calc() { awk "BEGIN { print $1 }"; }
+  mid=$(calc "$height / 2")
+  nx=$(calc "int(0.1 / $cell + 0.5)")
+  ny=$(calc "int($height / $cell + 0.5)")
+  cat << EOF
+set Dimension = 2
+subsection Geometry
+  set Lower corner = 0, 0
+  set Upper corner = 0.1, $height
+  set Subdivisions = $nx, $ny
+end
+subsection Material
+  set Young's modulus       = 72e9
+  set Poisson's ratio       = 0.22
+  set Density               = 2440
+  set Two-dimensional model = plane stress
+end
+subsection Peridynamics
+  set Lattice spacing              = $dx
+  set Horizon factor               = 3.2
+  set Fracture                     = true
+  set Critical energy release rate = 3.8
+  set Pre-cracks                   = 0, $mid : 0.05, $mid
+EOF
+  if [ "$half" = 0 ]; then
+    echo "  set Region = 0, 0 : 0.1, $height"
+    echo "end"
+  else
+    local a b o1 o2
+    a=$(calc "$mid - $half"); b=$(calc "$mid + $half")
+    o1=$(calc "$a - $layers * $cell"); o2=$(calc "$b + $layers * $cell")
+    echo "  set Region = 0, $a : 0.1, $b"
+    echo "end"
+    cat << EOF
+subsection Coupling
+  set Method                = weak
+  set Blending              = force
+  set Overlap region        = 0, $o1 : 0.1, $a ; 0, $b : 0.1, $o2
+  set Finite element region = 0, 0 : 0.1, $o1 ; 0, $o2 : 0.1, $height
+end
+EOF
+  fi
+  cat << EOF
+subsection Boundary conditions
+  subsection Boundary 2
+    set Type = traction
+    subsection Function
+      set Function expression = 0; -2e6
+    end
+  end
+  subsection Boundary 3
+    set Type = traction
+    subsection Function
+      set Function expression = 0; 2e6
+    end
+  end
+end
+subsection Time
+  set Time step = 2.5e-8
+  set End time  = 4.3e-5
+end
+subsection Output
+  set Directory         = $name
+  set Output interval   = 430
+  set Energy interval   = 20
+  set Progress interval = 30
+  set Print timing      = true
+end
+subsection Postprocess
+  set List of postprocessors = energies, constraint residuals, cracks
+end
+EOF
+}
+
+run() {
+  local name=$1
+  shift
+  case_file "$name" "$@" > "$name.prm"
+  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$name.prm" > "$name.log" 2>&1 || true
+  "$here/plot_cracks.sh" "$name" "${reference:-}" > /dev/null || true
+}
+
+# 100 x 40 mm: the branches spread to y = 20 +- 13 mm, so the PD strip must nearly fill the
+# plate; with overlaps of 5 FE cells nothing is left for FE. Coupled with the widest strip that
+# leaves 5 overlap cells: 10 mm (ratio 8) -- the run stops when the branches near the overlap.
+reference=""
+run pd_40 0.04 0 0.0025 5
+reference=pd_40
+run coupled8_40 0.04 0.0075 0.0025 5
+# 100 x 120 mm (the paper's aspect ratio): PD strip of a third of the height, |y - 60| <= 20 mm.
+reference=""
+run pd_120 0.12 0 0.0025 5
+reference=pd_120
+run coupled8_120 0.12 0.02 0.0025 5
+run coupled16_120 0.12 0.02 0.005 5
+
+"$here/crack_branching_table.sh" pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120
