@@ -88,7 +88,7 @@ subsection Output
   set Output interval   = 430
   set Energy interval   = 20
   set Progress interval = 30
-  set Print timing      = true
+  set Print timing summary = true
 end
 subsection Postprocess
   set List of postprocessors = energies, constraint residuals, cracks
@@ -106,16 +106,21 @@ run() {
 
 # 100 x 40 mm: the branches spread to y = 20 +- 13 mm, so the PD strip must nearly fill the
 # plate; with overlaps of 5 FE cells nothing is left for FE. Coupled with the widest strip that
-# leaves 5 overlap cells: 10 mm (ratio 8) -- the run stops when the branches near the overlap.
+# leaves 5 overlap cells and one FE cell: |y - 20| <= 5 mm (ratio 8); the run stops when the
+# branches near the overlap.
 reference=""
 run pd_40 0.04 0 0.0025 5
 reference=pd_40
-run coupled8_40 0.04 0.0075 0.0025 5
-# 100 x 120 mm (the paper's aspect ratio): PD strip of a third of the height, |y - 60| <= 20 mm.
+run coupled8_40 0.04 0.005 0.0025 5
+# 100 x 120 mm (the paper's aspect ratio): PD strip of a third of the height, |y - 60| <= 20 mm,
+# and one chosen from where the cracks go in pure PD (y = 60 +- 4 mm): |y - 60| <= 10 mm.
 reference=""
 run pd_120 0.12 0 0.0025 5
 reference=pd_120
 run coupled8_120 0.12 0.02 0.0025 5
 run coupled16_120 0.12 0.02 0.005 5
+run coupled8_120_narrow 0.12 0.01 0.0025 5
+run coupled16_120_narrow 0.12 0.01 0.005 5
 
-"$here/crack_branching_table.sh" pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120
+"$here/crack_branching_table.sh" pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120 \
+  coupled8_120_narrow coupled16_120_narrow

@@ -123,7 +123,7 @@ namespace PeriArlequin
                            GhostExchange<dim>                           &ghosts,
                            const std::function<bool(const Point<dim> &)> &extent,
                            const std::vector<PreCrack<dim>>             &pre_cracks,
-                           const Region<dim>                            &no_fail_region)
+                           const std::function<bool(const Point<dim> &)> &no_fail)
   {
     const unsigned int owned = ghosts.n_owned();
     const auto         x       = ghosts.reference_positions();
@@ -167,9 +167,7 @@ namespace PeriArlequin
             for (const auto &crack : pre_cracks)
               if (crack.cuts(first, second))
                 bond_state = BondFamilies<dim>::broken;
-            if (bond_state != BondFamilies<dim>::broken &&
-                (no_fail_region.contains(x[i]) ||
-                 no_fail_region.contains(x[j])))
+            if (bond_state != BondFamilies<dim>::broken && (no_fail(x[i]) || no_fail(x[j])))
               bond_state = BondFamilies<dim>::unbreakable;
             add_bond(j, k, bond_state);
           }

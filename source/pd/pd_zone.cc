@@ -147,7 +147,12 @@ namespace PeriArlequin
     ghosts.reinit();
     check_horizon_covered();
     compute_blending_weights();
-    bonds.build(lattice, ghosts, extent, parameters.pre_cracks, parameters.no_fail_region);
+    // Bonds in the overlap and the slave layer never break: the coupling assumes a continuum
+    // there.
+    bonds.build(lattice, ghosts, extent, parameters.pre_cracks, [this](const Point<dim> &x) {
+      return parameters.no_fail_region.contains(x) || blending_weight(x) > 0;
+    });
+    find_bonds_near_overlap();
     model->initialize(material, bonds);
 
     const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
@@ -160,6 +165,90 @@ namespace PeriArlequin
     find_boundary_layers();
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::find_bonds_near_overlap()
+  {
+    // The particles near the overlap: pure PD (alpha = 0) with a bond to the overlap or the
+    // slave layer (alpha > 0), owned and ghosts.
+    const unsigned int  n_owned = ghosts.n_owned();
+    const auto          x       = ghosts.reference_positions();
+    std::vector<double> near(ghosts.n_total(), 0.);
+    bool                cut = false, any_weighted = false;
+    Point<dim>          cut_at;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          const unsigned int j = bonds.neighbor[n];
+          any_weighted         = any_weighted || alpha[i] > 0;
+          if (alpha[i] == 0 && alpha[j] > 0)
+            near[i] = 1;
+          if (j < n_owned && alpha[j] == 0 && alpha[i] > 0)
+            near[j] = 1;
+          if ((alpha[i] > 0 || alpha[j] > 0) && bonds.state[n] == BondFamilies<dim>::broken &&
+              !cut)
+            {
+              cut    = true;
+              cut_at = alpha[i] > 0 ? x[i] : x[j];
+            }
+        }
+    if (Utilities::MPI::logical_or(cut, communicator))
+      {
+        std::ostringstream where;
+        where << "a crack that cuts bonds of the overlap or the slave layer";
+        if (cut)
+          where << " (at " << cut_at << " m)";
+        throw_invalid_parameter("Peridynamics/Pre-cracks",
+                                where.str(),
+                                "cracks in the pure PD region, more than a bond away from the "
+                                "overlap: the coupling assumes an intact continuum there; "
+                                "enlarge Peridynamics/Region or move the overlap");
+      }
+    checks_overlap = fracture && Utilities::MPI::logical_or(any_weighted, communicator);
+    ghosts.update_ghosts(make_array_view(near), 1);
+    // Their bonds among themselves and into the pure PD zone, intact now (those into the
+    // overlap are unbreakable).
+    bonds_near_overlap.clear();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          const unsigned int j = bonds.neighbor[n];
+          if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
+            bonds_near_overlap.emplace_back(near[i] > 0 ? i : j, n);
+        }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::check_damage_near_overlap(const double time) const
+  {
+    const auto            ids   = ghosts.ids();
+    types::particle_index first = std::numeric_limits<types::particle_index>::max();
+    unsigned int          local = 0;
+    for (const auto &[i, n] : bonds_near_overlap)
+      if (bonds.state[n] == BondFamilies<dim>::broken && ids[i] < first)
+        {
+          first = ids[i];
+          local = i;
+        }
+    const types::particle_index global_first = Utilities::MPI::min(first, communicator);
+    if (global_first == std::numeric_limits<types::particle_index>::max())
+      return;
+    Point<dim> position;
+    for (unsigned int d = 0; d < dim; ++d)
+      position[d] = Utilities::MPI::max(first == global_first ?
+                                          ghosts.reference_positions()[local][d] :
+                                          -std::numeric_limits<double>::max(),
+                                        communicator);
+    std::ostringstream message;
+    message << "Damage reached the overlap at t = " << time << " s: a bond of the particle at ("
+            << position << ") m, one bond away from the overlap, broke. The coupling assumes "
+            << "an intact continuum in the overlap and the FE zone, so the run stops here. "
+            << "Enlarge the PD region around the crack path (Peridynamics/Region, "
+            << "Coupling/Overlap region and Coupling/Finite element region).";
+    AssertThrow(false, ExcMessage(message.str()));
   }
 
   template <int dim>

@@ -89,6 +89,8 @@ namespace PeriArlequin
     update_ghost_displacements();
     if (fracture)
       fracture->break_bonds(bonds, state.displacements());
+    if (checks_overlap)
+      check_damage_near_overlap(time);
     evaluate_model();
 
     const double rho = material.density, volume = particle_volume();

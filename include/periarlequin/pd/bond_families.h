@@ -65,7 +65,7 @@ namespace PeriArlequin
     /**
      * The families of the owned particles of @p ghosts on @p lattice (the stencil built):
      * every stencil neighbour that is held, owned or ghost. A bond cut by one of
-     * @p pre_cracks starts broken, an intact one with an end in @p no_fail_region cannot
+     * @p pre_cracks starts broken, an intact one with an end where @p no_fail is true cannot
      * break. A neighbour that @p extent accepts but that is not held means the ghost layer
      * does not cover the horizon: an error. Fills weighted_volume for owned particles and
      * ghosts.
@@ -75,7 +75,7 @@ namespace PeriArlequin
           GhostExchange<dim>                           &ghosts,
           const std::function<bool(const Point<dim> &)> &extent,
           const std::vector<PreCrack<dim>>             &pre_cracks,
-          const Region<dim>                            &no_fail_region);
+          const std::function<bool(const Point<dim> &)> &no_fail);
 
     using IdPair = std::pair<types::particle_index, types::particle_index>;
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */

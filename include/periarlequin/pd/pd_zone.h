@@ -263,6 +263,15 @@ namespace PeriArlequin
      */
     void
     find_boundary_layers();
+    /**
+     * The intact bonds of the pure PD particles one bond away from the overlap or the slave
+     * layer (whose own bonds cannot break); a pre-crack that cuts bonds there is an error.
+     */
+    void
+    find_bonds_near_overlap();
+    /** Stop with a message naming @p time and the place if a bond near the overlap broke. */
+    void
+    check_damage_near_overlap(const double time) const;
     /** Body force plus boundary tractions per unit volume on owned particle @p i [N/m^dim]. */
     Tensor<1, dim>
     load_density(const unsigned int i, const double time) const;
@@ -301,6 +310,9 @@ namespace PeriArlequin
     std::vector<double>         alpha, state_weight, force_weight, mass_weight;
     std::vector<unsigned char>  slave;
 
+    /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
+    std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
+    bool                                              checks_overlap = false;
     /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
     std::vector<std::uint8_t> traction_faces;
     /** Applied force (loads plus support reactions) of owned particles [N]. */
