@@ -4,11 +4,12 @@
 # the particle and FE DoF counts, wall time of the time loop and the timer shares, crack
 # initiation (crack extension past one horizon, 1 mm), branching (first record with two tips:
 # time, and the main tip x at the record before), the branch angles (from the tip at the
-# record before branching to each final tip), the tip x of the first branch at 20-43 us, the
+# record before branching to each tip 4 us after branching), the x of the leading tip at
+# 20-43 us, the
 # broken-bond energy, and where a run stopped early, why.
 #   scripts/crack_branching_table.sh <name> ...
 set -euo pipefail
-printf '| run | particles | FE DoFs | loop [s] | PD forces | coupling | FE forces | output + diagnostics | initiation [us] | branching [us] | branching x [mm] | branch angles [deg] | tip x at 20/25/30/35/40/43 us [mm] | broken-bond energy [J/m] | end |\n'
+printf '| run | particles | FE DoFs | loop [s] | PD forces | coupling | FE forces | output + diagnostics | initiation [us] | branching [us] | branching x [mm] | branch angles [deg] | leading tip x at 20/25/30/35/40/43 us [mm] | broken-bond energy [J/m] | end |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 for name in "$@"; do
   log=$name.log
@@ -32,15 +33,20 @@ for name in "$@"; do
         branch = sprintf("%.1f", t); bx = last_x; by = last_y
       }
       if (n == 1) { last_x = $col["branch_0_x"]; last_y = $col["branch_0_y"] }
+      # Tips 4 us after branching give the branch angles: the final tips of arrested
+      # branches are too close to the branching point.
       for (k = 0; k < 4; ++k) {
         x = $col["branch_" k "_x"]
-        if (x != "nan" && x != "") { fx[k] = x; fy[k] = $col["branch_" k "_y"] }
+        if (x != "nan" && x != "" && branch != "" && t <= branch + 4 + 1e-6) { fx[k] = x; fy[k] = $col["branch_" k "_y"] }
       }
-      for (s = 20; s <= 43; s += 5) {
-        target = (s == 45 ? 43 : s)
-        if (tip[target] == "" && t >= target - 1e-6) tip[target] = ($col["branch_0_x"] == "nan" ? "-" : sprintf("%.1f", $col["branch_0_x"] * 1e3))
+      lead = "-"
+      for (k = 0; k < 4; ++k) {
+        x = $col["branch_" k "_x"]
+        if (x != "nan" && x != "" && (lead == "-" || x * 1e3 > lead + 0)) lead = sprintf("%.1f", x * 1e3)
       }
-      if (tip[43] == "" && t >= 43 - 1e-6) tip[43] = ($col["branch_0_x"] == "nan" ? "-" : sprintf("%.1f", $col["branch_0_x"] * 1e3))
+      for (s = 20; s <= 40; s += 5)
+        if (tip[s] == "" && t >= s - 1e-6) tip[s] = lead
+      if (tip[43] == "" && t >= 43 - 1e-6) tip[43] = lead
       energy = $col["broken_bond_energy"]
     }
     END {

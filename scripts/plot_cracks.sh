@@ -18,15 +18,17 @@ else
   map=$(ls "$dir"/*_damage_*.csv | sort | tail -1)
 fi
 column() { head -1 "$1" | tr ',' '\n' | grep -nx "$2" | cut -d: -f1; }
-time_of() { head -1 "$1" | sed 's/^# t = \([^ ]*\) s$/\1/'; }
+time_of() { head -1 "$1" | sed 's/^# t = \([^ ]*\) s.*/\1/'; }
+# x and y ranges of the model from the map's first line "# t = <t> s; domain x0 y0 [z0] x1 y1 [z1]"
+ranges() { head -1 "$1" | awk '{ n = (NF - 6) / 2; printf "set xrange [%s:%s]; set yrange [%s:%s]", $7, $(7 + n), $8, $(8 + n) }'; }
 branches() { head -1 "$1" | tr ',' '\n' | sed -n 's/^branch_\([0-9]*\)_x$/\1/p'; }
 {
   echo "set datafile separator ','; set terminal pngcairo size 1000,500 noenhanced"
   echo "set output '$dir/damage.png'; set size ratio -1; set xlabel 'x [m]'; set ylabel 'y [m]'"
-  echo "set title 'damage at t = $(time_of "$map") s'; set cbrange [0:0.6]"
+  echo "set title 'damage at t = $(time_of "$map") s'; set cbrange [0:0.6]; $(ranges "$map")"
   echo "set palette defined (0 '#f0f0f0', 0.2 '#fdae61', 0.35 '#d7191c', 0.6 '#2b0000')"
   echo "plot '$map' skip 2 using 1:2:3 with points pt 5 ps 0.25 palette notitle"
-  echo "set output '$dir/tips.png'; set size noratio; unset cbrange; set title ''"
+  echo "set output '$dir/tips.png'; set size noratio; unset cbrange; set autoscale; set title ''"
   echo "set xlabel 'time [s]'; set ylabel 'tip x, path length [m]'; set key left top"
   t=$(column "$energy" time)
   plots=()

@@ -1,4 +1,5 @@
 #include <periarlequin/base/parameters.h>
+#include <periarlequin/base/crack_tip_field.h>
 #include <periarlequin/base/problem_data.h>
 
 #include <deal.II/base/utilities.h>
@@ -156,6 +157,7 @@ namespace PeriArlequin
                               "[Pa] (Type = traction) as a function of position and time.");
         prm.leave_subsection();
       }
+    CrackTipField<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -185,9 +187,34 @@ namespace PeriArlequin
                                   prm.get("Components"),
                                   "at least one of x, y" + std::string(dim == 3 ? ", z" : "") +
                                     " for a displacement condition");
-        condition.function = std::make_unique<Functions::ParsedFunction<dim>>(dim);
-        parse_vector_function(prm, "Boundary conditions/" + name + "/", "Function", *condition.function);
+        auto function = std::make_unique<Functions::ParsedFunction<dim>>(dim);
+        parse_vector_function(prm, "Boundary conditions/" + name + "/", "Function", *function);
+        condition.function = std::move(function);
         prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    // The crack-tip field, one object per boundary id it prescribes (each keeps its time).
+    Parameters::Material material;
+    material.parse_parameters(prm);
+    prm.enter_subsection("Boundary conditions");
+    std::vector<unsigned int> crack_tip_ids;
+    CrackTipField<dim>(prm, material, crack_tip_ids);
+    for (const unsigned int b : crack_tip_ids)
+      {
+        BoundaryCondition<dim> &condition = boundary_conditions[b];
+        if (condition.type != BoundaryType::free)
+          throw_invalid_parameter("Boundary conditions/Crack tip field/Boundary ids",
+                                  std::to_string(b),
+                                  "ids whose own 'Boundary conditions/Boundary " +
+                                    std::to_string(b) + "/Type' is free (it is " +
+                                    (condition.type == BoundaryType::traction ? "traction" :
+                                                                                "displacement") +
+                                    ")");
+        condition.type       = BoundaryType::displacement;
+        condition.components = ComponentMask(dim, true);
+        std::vector<unsigned int> same_ids;
+        condition.function = std::make_unique<CrackTipField<dim>>(prm, material, same_ids);
       }
     prm.leave_subsection();
   }

@@ -527,6 +527,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  const Box<dim> &
+  PDZone<dim>::get_domain() const
+  {
+    return domain;
+  }
+
+  template <int dim>
   double
   PDZone<dim>::particle_volume() const
   {

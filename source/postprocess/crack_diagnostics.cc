@@ -419,8 +419,13 @@ namespace PeriArlequin
          << std::setfill('0') << simulator.get_step_number() << ".csv";
     std::ofstream file(name.str());
     AssertThrow(file, ExcMessage("Cannot write " + name.str()));
-    file << "# t = " << std::setprecision(10) << simulator.get_time() << " s\n"
-         << (dim == 2 ? "x,y,damage\n" : "x,y,z,damage\n") << std::setprecision(8);
+    const Box<dim> &domain = simulator.get_pd_zone()->get_domain();
+    file << "# t = " << std::setprecision(10) << simulator.get_time() << " s; domain";
+    for (const Point<dim> &corner : {domain.lower, domain.upper})
+      for (unsigned int d = 0; d < dim; ++d)
+        file << ' ' << corner[d];
+    file << '\n';
+    file << (dim == 2 ? "x,y,damage\n" : "x,y,z,damage\n") << std::setprecision(8);
     for (const auto &[particle, d] : damaged)
       {
         for (unsigned int c = 0; c < dim; ++c)

@@ -61,21 +61,22 @@ namespace PeriArlequin
 
   /**
    * Condition on one boundary id: a prescribed displacement on the selected components, or a
-   * traction vector, both muparser expressions of (x, y[, z], t).
+   * traction vector, functions of (x, y[, z], t): muparser expressions, or the crack-tip field.
    */
   template <int dim>
   struct BoundaryCondition
   {
-    BoundaryType                                    type = BoundaryType::free;
-    ComponentMask                                   components;
-    std::unique_ptr<Functions::ParsedFunction<dim>> function;
+    BoundaryType                   type = BoundaryType::free;
+    ComponentMask                  components;
+    std::unique_ptr<Function<dim>> function;
   };
 
   /**
    * The data of an elastodynamic problem that do not depend on its discretisation: the
    * initial condition (a registered model), the body force and the condition on each
    * boundary id of the box, the latter vector-valued muparser expressions with named
-   * constants ("Function constants").
+   * constants ("Function constants"), or, for the ids listed in "Boundary conditions/Crack
+   * tip field", the displacement of a mode I/II crack tip (CrackTipField).
    */
   template <int dim>
   class ProblemData

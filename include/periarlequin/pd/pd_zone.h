@@ -157,6 +157,9 @@ namespace PeriArlequin
     get_communicator() const;
     const Parameters::Peridynamics<dim> &
     get_parameters() const;
+    /** The box of the whole model (Geometry/Lower corner, Upper corner) [m]. */
+    const Box<dim> &
+    get_domain() const;
 
     /**
      * Copy displacement, velocity, damage and the model's particle scalars into the owned

@@ -103,8 +103,9 @@ namespace PeriArlequin
    * each branch (CrackTracker), the crack extension, the crack area measured by the broken
    * bonds (broken_bond_area()) created since the start and the energy they dissipated,
    * G0 times that area (Peridynamics/Critical energy release rate; 2D: per unit thickness).
-   * Maps of the damaged particles are written as CSV (x, y[, z], damage) with the
-   * ParaView output (Output/Output interval), for scripts/plot_cracks.sh.
+   * Maps of the damaged particles are written as CSV (x, y[, z], damage; a first line
+   * "# t = <time> s; domain <lower corner> <upper corner>") with the ParaView output
+   * (Output/Output interval), for scripts/plot_cracks.sh.
    */
   template <int dim>
   class CrackDiagnostics : public Postprocessor<dim>

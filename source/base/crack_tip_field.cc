@@ -1,0 +1,130 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <periarlequin/base/crack_tip_field.h>
+
+#include <cmath>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  CrackTipField<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Crack tip field");
+    prm.declare_entry("Boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 2 * dim - 1)),
+                      "Boundary ids whose displacement is the crack-tip field of eq. 82 (their "
+                      "own Type must be free); empty: none.");
+    prm.declare_entry("Tip", "0, 0", Patterns::List(Patterns::Double(), 2, 2), "Crack tip x, y [m].");
+    prm.declare_entry("Crack direction",
+                      "0",
+                      Patterns::Double(-360, 360),
+                      "Direction in which the crack points, from its faces to the tip, "
+                      "counter-clockwise from x [degrees]: 0 is a crack along the negative x "
+                      "axis of the tip.");
+    prm.declare_entry("Stress intensity factor",
+                      "0",
+                      Patterns::Anything(),
+                      "K_eff(t) = sqrt(K_I^2 + K_II^2) as a muparser expression of the time t "
+                      "[Pa m^1/2], e.g. 1e9*t for the paper's ramp of 1e3 MPa m^1/2/s.");
+    prm.declare_entry("Phase angle",
+                      "0",
+                      Patterns::Double(-90, 90),
+                      "psi with K_I = K_eff cos psi, K_II = K_eff sin psi [degrees].");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  CrackTipField<dim>::CrackTipField(ParameterHandler           &prm,
+                                    const Parameters::Material &material,
+                                    std::vector<unsigned int>  &boundary_ids)
+    : Function<dim>(dim)
+  {
+    prm.enter_subsection("Crack tip field");
+    boundary_ids.clear();
+    for (const std::string &id : Utilities::split_string_list(prm.get("Boundary ids")))
+      boundary_ids.push_back(Utilities::string_to_int(id));
+    const auto coordinates = Utilities::string_to_double(Utilities::split_string_list(prm.get("Tip")));
+    tip                    = Point<2>(coordinates[0], coordinates[1]);
+    direction              = prm.get_double("Crack direction") * numbers::PI / 180.;
+    phase_angle            = prm.get_double("Phase angle") * numbers::PI / 180.;
+    const std::string expression = prm.get("Stress intensity factor");
+    prm.leave_subsection();
+    initialize(expression, material);
+  }
+
+  template <int dim>
+  CrackTipField<dim>::CrackTipField(const Point<2>             &tip,
+                                    const double                direction,
+                                    const std::string          &stress_intensity,
+                                    const double                phase_angle,
+                                    const Parameters::Material &material)
+    : Function<dim>(dim)
+    , tip(tip)
+    , direction(direction)
+    , phase_angle(phase_angle)
+  {
+    initialize(stress_intensity, material);
+  }
+
+  template <int dim>
+  void
+  CrackTipField<dim>::initialize(const std::string          &stress_intensity,
+                                 const Parameters::Material &material)
+  {
+    const double nu = material.poissons_ratio;
+    shear_modulus   = material.youngs_modulus / (2. * (1. + nu));
+    kappa           = (dim == 2 && material.planar_model == Parameters::PlanarModel::plane_stress) ?
+                        (3. - nu) / (1. + nu) :
+                        3. - 4. * nu;
+    try
+      {
+        stress_intensity_factor.initialize("t", stress_intensity, {{"pi", numbers::PI}});
+        // muparser parses at the first evaluation.
+        AssertThrow(std::isfinite(stress_intensity_factor.value(Point<1>(0.))),
+                    ExcMessage("not finite"));
+      }
+    catch (...)
+      {
+        throw_invalid_parameter("Boundary conditions/Crack tip field/Stress intensity factor",
+                                stress_intensity,
+                                "a muparser expression of the time t [Pa m^1/2]");
+      }
+  }
+
+  template <int dim>
+  void
+  CrackTipField<dim>::vector_value(const Point<dim> &p, Vector<double> &values) const
+  {
+    // Polar coordinates in the crack's frame.
+    const double c = std::cos(direction), s = std::sin(direction);
+    const double dx = p[0] - tip[0], dy = p[1] - tip[1];
+    const double x = c * dx + s * dy, y = -s * dx + c * dy;
+    const double r = std::sqrt(x * x + y * y), theta = std::atan2(y, x);
+    const double K     = stress_intensity_factor.value(Point<1>(this->get_time()));
+    const double K_I   = K * std::cos(phase_angle), K_II = K * std::sin(phase_angle);
+    const double scale = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
+    const double ch = std::cos(theta / 2), sh = std::sin(theta / 2);
+    const double ux = scale * (K_I * ch * (kappa - 1. + 2. * sh * sh) +
+                               K_II * sh * (kappa + 1. + 2. * ch * ch));
+    const double uy = scale * (K_I * sh * (kappa + 1. - 2. * ch * ch) -
+                               K_II * ch * (kappa - 1. - 2. * sh * sh));
+    values    = 0.;
+    values(0) = c * ux - s * uy;
+    values(1) = s * ux + c * uy;
+  }
+
+  template <int dim>
+  double
+  CrackTipField<dim>::value(const Point<dim> &p, const unsigned int component) const
+  {
+    Vector<double> values(dim);
+    vector_value(p, values);
+    return values(component);
+  }
+
+  template class CrackTipField<2>;
+  template class CrackTipField<3>;
+} // namespace PeriArlequin
