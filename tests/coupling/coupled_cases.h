@@ -290,6 +290,32 @@ namespace PeriArlequinTests
          << quiet_output() << extra;
     return text.str();
   }
+  /**
+   * The notched glass plate at a coarse resolution (lattice 0.625 mm, delta = 2 mm, FE cells
+   * 2.5 mm, time step 40 ns): glass_plate_case with fracture (G0 = 3.8 J/m^2), a 50 mm notch
+   * along y = 20 mm from the left edge, PD strip |y - 20 mm| <= @p half_strip with overlaps
+   * up to 5 mm from the loaded edges (force blending) or PD everywhere, the crack
+   * diagnostics recorded every 1 us, to @p end_time.
+   */
+  inline std::string
+  notched_glass_plate_case(const bool coupled, const double half_strip, const double end_time)
+  {
+    return glass_plate_case(coupled,
+                            6.25e-4,
+                            0.0025,
+                            half_strip,
+                            0.015 - half_strip,
+                            2e6,
+                            4e-8,
+                            end_time,
+                            "force",
+                            "subsection Peridynamics\n  set Fracture = true\n"
+                            "  set Critical energy release rate = 3.8\n"
+                            "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
+                            "subsection Output\n  set Energy interval = 25\nend\n"
+                            "subsection Postprocess\n  set List of postprocessors = energies, "
+                            "cracks\nend\n");
+  }
 } // namespace PeriArlequinTests
 
 #endif

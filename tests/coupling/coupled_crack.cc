@@ -21,26 +21,6 @@ using namespace PeriArlequin;
 
 namespace
 {
-  std::string
-  crack_case(const bool coupled, const double half_strip, const double end_time)
-  {
-    return glass_plate_case(coupled,
-                            6.25e-4,
-                            0.0025,
-                            half_strip,
-                            0.015 - half_strip,
-                            2e6,
-                            4e-8,
-                            end_time,
-                            "force",
-                            "subsection Peridynamics\n  set Fracture = true\n"
-                            "  set Critical energy release rate = 3.8\n"
-                            "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
-                            "subsection Output\n  set Energy interval = 25\nend\n"
-                            "subsection Postprocess\n  set List of postprocessors = energies, "
-                            "cracks\nend\n");
-  }
-
   /** Broken bonds with an end in the overlap or the slave layer (alpha > 0), all ranks. */
   unsigned int
   broken_coupled_bonds(const PDZone<2> &pd)
@@ -61,9 +41,9 @@ main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
     const double delta = 3.2 * 6.25e-4;
-    auto         pure_pd = make_simulator<2>(crack_case(false, 0.0075, 2e-5));
+    auto         pure_pd = make_simulator<2>(notched_glass_plate_case(false, 0.0075, 2e-5));
     pure_pd->run();
-    auto coupled = make_simulator<2>(crack_case(true, 0.0075, 2e-5));
+    auto coupled = make_simulator<2>(notched_glass_plate_case(true, 0.0075, 2e-5));
     coupled->run();
 
     const auto &reference = pure_pd->get_energy_history(), &history = coupled->get_energy_history();
@@ -91,7 +71,7 @@ main(int argc, char **argv)
                 broken_coupled_bonds(*coupled->get_pd_zone()),
                 0.5);
 
-    auto        narrow  = make_simulator<2>(crack_case(true, 0.005, 4e-5));
+    auto        narrow  = make_simulator<2>(notched_glass_plate_case(true, 0.005, 4e-5));
     std::string message;
     try
       {

@@ -14,14 +14,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const std::string text =
-      glass_plate_case(true, 6.25e-4, 0.0025, 0.0075, 0.0075, 2e6, 4e-8, 2e-5, "force",
-                       "subsection Peridynamics\n  set Fracture = true\n"
-                       "  set Critical energy release rate = 3.8\n"
-                       "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
-                       "subsection Output\n  set Energy interval = 25\nend\n"
-                       "subsection Postprocess\n  set List of postprocessors = energies, "
-                       "cracks\nend\n");
+    const std::string text = notched_glass_plate_case(true, 0.0075, 2e-5);
     auto parallel = make_simulator<2>(text, MPI_COMM_WORLD);
     parallel->run();
     const auto broken = parallel->get_energy_history().column("broken_bonds");
