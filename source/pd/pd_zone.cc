@@ -273,7 +273,7 @@ namespace PeriArlequin
               continue;
             if (type == BoundaryType::traction)
               traction_faces[i] |= (1u << b);
-            else if (type == BoundaryType::displacement && alpha[i] < 1.)
+            else if (type == BoundaryType::displacement && !slave[i])
               fixed_particle = true;
           }
         if (Utilities::MPI::logical_or(fixed_particle, communicator))
