@@ -65,12 +65,11 @@ namespace PeriArlequin
     const ProblemData<dim> &data = *problem_data;
     const Point<dim>       &x    = ghosts.reference_positions()[i];
     Tensor<1, dim>          density;
-    Vector<double>          value(dim);
     const auto              add = [&](Function<dim> &load, const double scale) {
       load.set_time(time);
-      load.vector_value(x, value);
+      load.vector_value(x, load_value);
       for (unsigned int d = 0; d < dim; ++d)
-        density[d] += scale * value(d);
+        density[d] += scale * load_value(d);
     };
     if (data.has_body_force)
       add(data.body_force, 1.);

@@ -6,6 +6,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
 #include <periarlequin/base/parameters.h>
@@ -316,6 +317,8 @@ namespace PeriArlequin
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
+    /** Scratch of load_density(), called per particle and step: no allocation there. */
+    mutable Vector<double> load_value = Vector<double>(dim);
     /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
     std::vector<std::uint8_t> traction_faces;
     /** Applied force (loads plus support reactions) of owned particles [N]. */
