@@ -103,8 +103,7 @@ namespace PeriArlequin
     const double dx = p[0] - tip[0], dy = p[1] - tip[1];
     const double x = c * dx + s * dy, y = -s * dx + c * dy;
     const double r = std::sqrt(x * x + y * y), theta = std::atan2(y, x);
-    const double K     = stress_intensity_factor.value(Point<1>(this->get_time()));
-    const double K_I   = K * std::cos(phase_angle), K_II = K * std::sin(phase_angle);
+    const auto [K_I, K_II] = stress_intensity_factors(this->get_time());
     const double scale = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
     const double ch = std::cos(theta / 2), sh = std::sin(theta / 2);
     const double ux = scale * (K_I * ch * (kappa - 1. + 2. * sh * sh) +
@@ -123,6 +122,22 @@ namespace PeriArlequin
     Vector<double> values(dim);
     vector_value(p, values);
     return values(component);
+  }
+
+  template <int dim>
+  std::array<double, 2>
+  CrackTipField<dim>::stress_intensity_factors(const double t) const
+  {
+    const double K = stress_intensity_factor.value(Point<1>(t));
+    return {{K * std::cos(phase_angle), K * std::sin(phase_angle)}};
+  }
+
+  template <int dim>
+  double
+  CrackTipField<dim>::energy_release_rate(const double t) const
+  {
+    const auto [K_I, K_II] = stress_intensity_factors(t);
+    return (K_I * K_I + K_II * K_II) * (kappa + 1.) / (8. * shear_modulus);
   }
 
   template class CrackTipField<2>;

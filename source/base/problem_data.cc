@@ -148,7 +148,11 @@ namespace PeriArlequin
                           selection_pattern(boundary_type_names),
                           "Condition on boundary id " + std::to_string(b) +
                             " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
-                            "traction), displacement (prescribed components) or traction.");
+                            "traction), displacement (prescribed components) or traction. "
+                            "PD particles within two bond reaches (2 delta + dx) of a "
+                            "displacement face follow the displacement (a fictitious boundary "
+                            "layer inside the domain); those within dx of a traction face "
+                            "carry t / dx.");
         declare_component_selection<dim>(
           prm, "Components whose displacement is prescribed (Type = displacement).");
         declare_vector_function<dim>(prm,

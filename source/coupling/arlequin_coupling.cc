@@ -49,8 +49,11 @@ namespace PeriArlequin
     for (const auto &fixed : fe.get_prescribed_dofs())
       fe_inverse_mass.local_element(fixed.local_index) = 0.;
     fe_inverse_mass.update_ghost_values();
+    // Prescribed particles (a displacement boundary layer or region) are moved by no force,
+    // as prescribed FE DoFs: zero inverse mass. A particle with some components prescribed
+    // counts as prescribed in all (its free components are then not coupled).
     for (const unsigned int i : overlap_particles)
-      pd_inverse_mass.push_back(1. / pd.particle_mass(i));
+      pd_inverse_mass.push_back(pd.is_prescribed(i) ? 0. : 1. / pd.particle_mass(i));
 
     if (mesh == MultiplierMesh::strict)
       space = std::make_unique<StrictMultiplierSpace<dim>>(overlap, communicator);

@@ -25,8 +25,9 @@ namespace PeriArlequin
         const double width = parameters.damping_overlap_width > 0 ?
                                parameters.damping_overlap_width :
                                blending.overlap_width(pd_zone.reference_positions()[i]);
+        // Prescribed particles keep their prescribed motion: no damping force.
         coefficient.push_back(
-          parameters.damping ? parameters.damping_constant * wave_speed * alpha * alpha / width :
+          parameters.damping && !pd_zone.is_prescribed(i) ? parameters.damping_constant * wave_speed * alpha * alpha / width :
                                0.);
         largest = std::max(largest, coefficient.back());
       }

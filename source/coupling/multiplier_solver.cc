@@ -28,17 +28,26 @@ namespace PeriArlequin
         // needs A to be positive definite.
         row_sum_diagonal(diagonal);
         for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
-          AssertThrow(diagonal.local_element(m) > 0,
+          AssertThrow(diagonal.local_element(m) >= 0,
                       ExcMessage("Invalid input: parameter 'Coupling/Multiplier solver' = "
-                                 "'diagonal'; a row sum of the multiplier matrix A is not "
-                                 "positive; allowed: 'cg' (conjugate gradients preconditioned "
+                                 "'diagonal'; a row sum of the multiplier matrix A is "
+                                 "negative; allowed: 'cg' (conjugate gradients preconditioned "
                                  "by the diagonal of A, positive since A is positive "
                                  "definite)."));
-        return;
       }
-    jacobi_diagonal(diagonal);
+    else
+      jacobi_diagonal(diagonal);
+    // A multiplier whose FE DoFs and PD nodes all move as prescribed (zero inverse masses) has
+    // a zero row and column in A: it transmits no force, and its constraint holds as well as
+    // the prescribed fields agree. Its equation is dropped (lambda = 0 there).
+    space.initialize_vector(free_rows);
     for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
-      diagonal.local_element(m) = 1. / diagonal.local_element(m);
+      free_rows.local_element(m) = diagonal.local_element(m) > 0 ? 1. : 0.;
+    if (method == Parameters::MultiplierSolver::diagonal)
+      return;
+    for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
+      diagonal.local_element(m) =
+        free_rows.local_element(m) > 0 ? 1. / diagonal.local_element(m) : 0.;
     preconditioner.reinit(diagonal);
     a_operator.vmult = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
     a_operator.reinit_range_vector  = [this](VectorType &v, const bool) {
@@ -96,22 +105,26 @@ namespace PeriArlequin
     if (method == Parameters::MultiplierSolver::diagonal)
       {
         for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
-          lambda.local_element(m) = rhs.local_element(m) / diagonal.local_element(m);
+          lambda.local_element(m) = free_rows.local_element(m) > 0 ?
+                                      rhs.local_element(m) / diagonal.local_element(m) :
+                                      0.;
         return;
       }
-    const double rhs_norm = rhs.l2_norm();
+    free_rhs = rhs;
+    free_rhs.scale(free_rows);
+    const double rhs_norm = free_rhs.l2_norm();
     if (rhs_norm == 0)
       {
         lambda = 0.;
         return;
       }
     // Start from the Jacobi solution; stop at a relative residual of 1e-12.
-    preconditioner.vmult(lambda, rhs);
+    preconditioner.vmult(lambda, free_rhs);
     SolverControl         control(1000, 1e-12 * rhs_norm, false, false);
     SolverCG<VectorType>  cg(control);
     try
       {
-        cg.solve(a_operator, lambda, rhs, preconditioner);
+        cg.solve(a_operator, lambda, free_rhs, preconditioner);
       }
     catch (const SolverControl::NoConvergence &)
       {

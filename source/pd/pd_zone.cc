@@ -256,33 +256,33 @@ namespace PeriArlequin
   PDZone<dim>::find_boundary_layers()
   {
     // The first layer of lattice sites along a face lies within dx of it, whatever the
-    // alignment of the lattice with the face.
-    const double dx = parameters.lattice_spacing;
-    const auto   x  = ghosts.reference_positions();
+    // alignment of the lattice with the face: it carries a traction. A displacement is
+    // prescribed on every particle within two bond reaches (delta + dx/2) of the face (slaves
+    // follow the FE nodes instead): the free particles and all their neighbours then have
+    // complete families, so the dilatations that enter a free particle's force are those of
+    // the bulk and no free particle feels the surface; the layer is the fictitious boundary
+    // layer, inside the domain.
+    const double dx    = parameters.lattice_spacing;
+    const double depth = 2. * (parameters.horizon() + 0.5 * dx);
+    const auto   x       = ghosts.reference_positions();
     traction_faces.assign(ghosts.n_owned(), 0);
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       {
-        const BoundaryType type      = problem_data->boundary_conditions[b].type;
+        const auto        &condition = problem_data->boundary_conditions[b];
         const unsigned int direction = b / 2;
-        bool               fixed_particle = false;
+        std::array<bool, dim> components;
+        for (unsigned int d = 0; d < dim; ++d)
+          components[d] = condition.type == BoundaryType::displacement && condition.components[d];
         for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
           {
             const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
                                                    domain.upper[direction] - x[i][direction];
-            if (distance >= dx * (1. - 1e-12))
-              continue;
-            if (type == BoundaryType::traction)
+            if (condition.type == BoundaryType::traction && distance < dx * (1. - 1e-12))
               traction_faces[i] |= (1u << b);
-            else if (type == BoundaryType::displacement && !slave[i])
-              fixed_particle = true;
+            else if (condition.type == BoundaryType::displacement && !slave[i] &&
+                     distance < depth * (1. - 1e-12))
+              prescribed.add(i, x[i], *condition.function, components);
           }
-        if (Utilities::MPI::logical_or(fixed_particle, communicator))
-          throw_invalid_parameter("Boundary conditions/Boundary " + std::to_string(b) + "/Type",
-                                  "displacement",
-                                  "'free' or 'traction' on a face that PD particles (other "
-                                  "than slaves) touch: a displacement there acts on FE nodes "
-                                  "only; prescribe the particles' motion with "
-                                  "'Peridynamics/Prescribed region N' instead");
       }
   }
 
@@ -468,6 +468,13 @@ namespace PeriArlequin
   PDZone<dim>::blending_weights() const
   {
     return make_array_view(alpha);
+  }
+
+  template <int dim>
+  bool
+  PDZone<dim>::is_prescribed(const unsigned int i) const
+  {
+    return prescribed.contains(i);
   }
 
   template <int dim>

@@ -16,13 +16,45 @@ namespace PeriArlequin
                                    const unsigned int          n_owned)
   {
     particles.clear();
+    is_prescribed.assign(n_owned, false);
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
-        if (parameters.prescribed[r].region.contains(positions[i]))
+      for (const auto &region : parameters.prescribed)
+        if (region.region.contains(positions[i]))
           {
-            particles.push_back({i, r, positions[i], Tensor<1, dim>(), Tensor<1, dim>()});
+            std::array<bool, dim> components;
+            for (unsigned int d = 0; d < dim; ++d)
+              components[d] = region.components[d];
+            particles.push_back({i,
+                                 region.function.get(),
+                                 components,
+                                 region.prescribes_velocity,
+                                 positions[i],
+                                 Tensor<1, dim>(),
+                                 Tensor<1, dim>()});
+            is_prescribed[i] = true;
             break;
           }
+  }
+
+  template <int dim>
+  void
+  PrescribedParticles<dim>::add(const unsigned int           i,
+                                const Point<dim>            &position,
+                                Function<dim>               &function,
+                                const std::array<bool, dim> &components)
+  {
+    if (is_prescribed[i])
+      return;
+    particles.push_back(
+      {i, &function, components, false, position, Tensor<1, dim>(), Tensor<1, dim>()});
+    is_prescribed[i] = true;
+  }
+
+  template <int dim>
+  bool
+  PrescribedParticles<dim>::contains(const unsigned int i) const
+  {
+    return is_prescribed[i];
   }
 
   template <int dim>
@@ -41,9 +73,8 @@ namespace PeriArlequin
     Vector<double> before(dim), now(dim), after(dim);
     for (auto &p : particles)
       {
-        const auto &condition = parameters.prescribed[p.region];
-        auto       &function  = *condition.function;
-        const Point<dim> &x         = p.position;
+        auto             &function = *p.function;
+        const Point<dim> &x        = p.position;
         function.set_time(time - dt);
         function.vector_value(x, before);
         function.set_time(time);
@@ -52,9 +83,9 @@ namespace PeriArlequin
         function.vector_value(x, after);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            if (!condition.components[d])
+            if (!p.components[d])
               continue;
-            if (condition.prescribes_velocity)
+            if (p.prescribes_velocity)
               {
                 p.velocity[d]     = now(d);
                 p.acceleration[d] = (after(d) - before(d)) / (2. * dt);
@@ -78,7 +109,7 @@ namespace PeriArlequin
     const auto velocities = state.velocities();
     for (const auto &p : particles)
       for (unsigned int d = 0; d < dim; ++d)
-        if (parameters.prescribed[p.region].components[d])
+        if (p.components[d])
           velocities[p.local_index][d] = p.velocity[d];
   }
 
@@ -89,7 +120,7 @@ namespace PeriArlequin
     const auto accelerations = state.accelerations();
     for (const auto &p : particles)
       for (unsigned int d = 0; d < dim; ++d)
-        if (parameters.prescribed[p.region].components[d])
+        if (p.components[d])
           accelerations[p.local_index][d] = p.acceleration[d];
   }
 

@@ -1,4 +1,7 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <periarlequin/base/crack_tip_field.h>
 
 #include <periarlequin/postprocess/crack_diagnostics.h>
 #include <periarlequin/simulator.h>
@@ -265,6 +268,103 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  CrackInitiation<dim>::CrackInitiation(const Point<dim>            &tip,
+                                        const double                 direction,
+                                        const double                 horizon,
+                                        const std::array<double, 2> &fit_range)
+    : tip(tip)
+    , horizon(horizon)
+    , fit_range(fit_range)
+  {
+    this->direction[0] = std::cos(direction);
+    this->direction[1] = std::sin(direction);
+  }
+
+  template <int dim>
+  double
+  CrackInitiation<dim>::distance_from_tip(const Point<dim> &x) const
+  {
+    return std::hypot(x[0] - tip[0], x[1] - tip[1]);
+  }
+
+  template <int dim>
+  void
+  CrackInitiation<dim>::update(const double                        time,
+                               const std::vector<CrackedParticle> &cracked,
+                               const unsigned long long            broken_near_tip)
+  {
+    if (first_record)
+      {
+        first_record            = false;
+        initial_broken_near_tip = broken_near_tip;
+        for (const auto &particle : cracked)
+          initially_cracked.insert(particle.id);
+        return;
+      }
+    if (std::isnan(initiation) && broken_near_tip > initial_broken_near_tip)
+      initiation = time;
+
+    // Second moment about the tip of the new cracked particles in the fit range.
+    const double   ahead = std::cos(2. * numbers::PI / 3.);
+    SymmetricTensor<2, 2> moment;
+    Tensor<1, 2>          sum;
+    n_fitted = 0;
+    for (const auto &particle : cracked)
+      {
+        if (initially_cracked.count(particle.id) > 0)
+          continue;
+        const Tensor<1, 2> d({particle.position[0] - tip[0], particle.position[1] - tip[1]});
+        const double       r = d.norm();
+        if (r == 0 || d * direction < ahead * r)
+          continue;
+        if (std::isnan(growth) && r >= horizon * (1. - 1e-12))
+          growth = time;
+        if (r < fit_range[0] || r > fit_range[1])
+          continue;
+        moment += symmetrize(outer_product(d, d));
+        sum += d;
+        ++n_fitted;
+      }
+    angle = std::numeric_limits<double>::quiet_NaN();
+    if (n_fitted < 3)
+      return;
+    // The principal axis of the larger eigenvalue, turned to point away from the tip.
+    const double phi = 0.5 * std::atan2(2. * moment[0][1], moment[0][0] - moment[1][1]);
+    Tensor<1, 2> axis({std::cos(phi), std::sin(phi)});
+    if (axis * sum < 0)
+      axis *= -1.;
+    angle = std::atan2(direction[0] * axis[1] - direction[1] * axis[0], direction * axis);
+  }
+
+  template <int dim>
+  double
+  CrackInitiation<dim>::initiation_time() const
+  {
+    return initiation;
+  }
+
+  template <int dim>
+  double
+  CrackInitiation<dim>::growth_time() const
+  {
+    return growth;
+  }
+
+  template <int dim>
+  double
+  CrackInitiation<dim>::kink_angle() const
+  {
+    return angle;
+  }
+
+  template <int dim>
+  unsigned int
+  CrackInitiation<dim>::n_fitted_particles() const
+  {
+    return n_fitted;
+  }
+
+  template <int dim>
   double
   broken_bond_area(const BondFamilies<dim> &bonds,
                    const double             lattice_spacing,
@@ -293,7 +393,6 @@ namespace PeriArlequin
   void
   CrackDiagnostics<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("cracks");
     prm.declare_entry("Damage threshold",
                       "0.35",
                       Patterns::Double(0, 1),
@@ -318,20 +417,45 @@ namespace PeriArlequin
                       "4",
                       Patterns::Integer(1, 64),
                       "Branches given columns in the history, in the order they appeared [-].");
-    prm.leave_subsection();
+    prm.declare_entry("Initial tip",
+                      "",
+                      Patterns::Anything(),
+                      "Tip of the pre-crack whose initiation and kink are followed, 'x, y[, z]' "
+                      "[m] (in 3D only x and y count: the front runs along z). Empty: none. "
+                      "Adds the columns initiation_time (first new broken bond of a particle "
+                      "within a horizon of the tip), growth_time (first new cracked particle a "
+                      "horizon or more ahead of it), kink_angle [deg] and kink_particles, and, "
+                      "when the boundaries carry a crack-tip field, its K_I, K_II [Pa m^1/2] "
+                      "and G [J/m^2] now and at initiation and growth.");
+    prm.declare_entry("Initial direction",
+                      "0",
+                      Patterns::Double(-360, 360),
+                      "Direction in which the pre-crack points at its tip, from the x axis "
+                      "[deg]; kink angles are measured from it, counter-clockwise positive.");
+    prm.declare_entry("Kink fit range",
+                      "1, 5",
+                      Patterns::List(Patterns::Double(0), 2, 2),
+                      "Least and largest distance from the initial tip of the new cracked "
+                      "particles whose line through the tip gives the kink angle [horizons].");
   }
 
   template <int dim>
   void
   CrackDiagnostics<dim>::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("cracks");
     damage_threshold  = prm.get_double("Damage threshold");
     link_distance     = prm.get_double("Link distance");
     branch_separation = prm.get_double("Branch separation");
     speed_window      = prm.get_integer("Speed window");
     reported_branches = prm.get_integer("Reported branches");
-    prm.leave_subsection();
+    initial_tip_text  = prm.get("Initial tip");
+    initial_direction = prm.get_double("Initial direction");
+    const auto range  = Utilities::string_to_double(Utilities::split_string_list(prm.get("Kink fit range")));
+    if (!(range[1] > range[0]))
+      throw_invalid_parameter("Postprocess/cracks/Kink fit range",
+                              prm.get("Kink fit range"),
+                              "two distances, the second larger than the first [horizons]");
+    kink_fit_range = {{range[0], range[1]}};
   }
 
   template <int dim>
@@ -347,6 +471,26 @@ namespace PeriArlequin
     if (!tracker)
       tracker = std::make_unique<CrackTracker<dim>>(link_distance * parameters.lattice_spacing,
                                                     branch_separation * parameters.horizon());
+    if (!initiation && !initial_tip_text.empty())
+      {
+        const std::vector<double> tip = Utilities::string_to_double(
+          Utilities::split_string_list(initial_tip_text));
+        if (tip.size() != dim)
+          throw_invalid_parameter("Postprocess/cracks/Initial tip",
+                                  initial_tip_text,
+                                  "empty or " + std::to_string(dim) + " coordinates [m]");
+        Point<dim> point;
+        for (unsigned int d = 0; d < dim; ++d)
+          point[d] = tip[d];
+        initiation = std::make_unique<CrackInitiation<dim>>(
+          point,
+          initial_direction * numbers::PI / 180.,
+          parameters.horizon(),
+          std::array<double, 2>{{kink_fit_range[0] * parameters.horizon(),
+                                 kink_fit_range[1] * parameters.horizon()}});
+        load_at_initiation.fill(std::numeric_limits<double>::quiet_NaN());
+        load_at_growth.fill(std::numeric_limits<double>::quiet_NaN());
+      }
 
     // Gathered as (id, position, damage) rows of doubles: ids are lattice site numbers,
     // exact in a double.
@@ -401,10 +545,81 @@ namespace PeriArlequin
         history.add_value(prefix + "speed", shown ? branches[b].speed(speed_window) : nan);
       }
 
+    if (initiation)
+      report_initiation(simulator, cracked, history);
+
     const unsigned int interval = simulator.get_output_parameters().output_interval;
     const unsigned int step     = simulator.get_step_number();
     if (interval > 0 && (step % interval == 0 || step == simulator.get_n_steps()))
       write_damage_map(simulator);
+  }
+
+  template <int dim>
+  void
+  CrackDiagnostics<dim>::report_initiation(
+    const Simulator<dim>                                       &simulator,
+    const std::vector<typename CrackTracker<dim>::CrackedParticle> &cracked,
+    EnergyHistory                                              &history)
+  {
+    const PDZone<dim> &pd    = *simulator.get_pd_zone();
+    const auto        &bonds = pd.get_bonds();
+    const auto         x     = pd.reference_positions();
+    unsigned long long broken_near_tip = 0;
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (initiation->distance_from_tip(x[i]) <= pd.get_parameters().horizon())
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          broken_near_tip += bonds.state[n] == BondFamilies<dim>::broken;
+    const double before = initiation->initiation_time(), growth_before = initiation->growth_time();
+    const double time   = simulator.get_time();
+    initiation->update(time,
+                       cracked,
+                       Utilities::MPI::sum(broken_near_tip, pd.get_communicator()));
+
+    const CrackTipField<dim> *field = nullptr;
+    for (const auto &condition : simulator.get_problem_data().boundary_conditions)
+      if (const auto tip_field = dynamic_cast<const CrackTipField<dim> *>(condition.function.get()))
+        field = tip_field;
+    std::array<double, 3> load;
+    load.fill(std::numeric_limits<double>::quiet_NaN());
+    if (field)
+      {
+        const auto K = field->stress_intensity_factors(time);
+        load         = {{K[0], K[1], field->energy_release_rate(time)}};
+      }
+    const bool initiated = std::isnan(before) && !std::isnan(initiation->initiation_time());
+    const bool grown     = std::isnan(growth_before) && !std::isnan(initiation->growth_time());
+    if (initiated)
+      load_at_initiation = load;
+    if (grown)
+      load_at_growth = load;
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(pd.get_communicator()) == 0);
+    for (const auto &[happened, what, values] :
+         {std::make_tuple(initiated, "initiation", load_at_initiation),
+          std::make_tuple(grown, "growth by a horizon", load_at_growth)})
+      if (happened)
+        {
+          pcout << "Crack " << what << " at t = " << time << " s";
+          if (field)
+            pcout << ": K_I = " << values[0] << ", K_II = " << values[1]
+                  << " Pa m^1/2, G = " << values[2] << " J/m^2";
+          pcout << std::endl;
+        }
+
+    history.add_value("initiation_time", initiation->initiation_time());
+    history.add_value("growth_time", initiation->growth_time());
+    history.add_value("kink_angle", initiation->kink_angle() * 180. / numbers::PI);
+    history.add_value("kink_particles", initiation->n_fitted_particles());
+    if (field)
+      {
+        const char *names[3] = {"K_I", "K_II", "G"};
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            history.add_value(names[k], load[k]);
+            history.add_value(std::string("initiation_") + names[k], load_at_initiation[k]);
+            history.add_value(std::string("growth_") + names[k], load_at_growth[k]);
+          }
+      }
   }
 
   template <int dim>
@@ -436,6 +651,8 @@ namespace PeriArlequin
 
   template class CrackTracker<2>;
   template class CrackTracker<3>;
+  template class CrackInitiation<2>;
+  template class CrackInitiation<3>;
   template double
   broken_bond_area(const BondFamilies<2> &, const double, const MPI_Comm);
   template double

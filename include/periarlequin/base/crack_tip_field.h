@@ -8,6 +8,7 @@
 
 #include <periarlequin/base/parameters.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,17 @@ namespace PeriArlequin
     vector_value(const Point<dim> &p, Vector<double> &values) const override;
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /** K_I and K_II at time @p t [Pa m^(1/2)]. */
+    std::array<double, 2>
+    stress_intensity_factors(const double t) const;
+
+    /**
+     * The energy release rate of the field at time @p t, (K_I^2 + K_II^2) / E' with
+     * E' = 8 mu / (kappa + 1): E in plane stress, E / (1 - nu^2) in plane strain [J/m^2].
+     */
+    double
+    energy_release_rate(const double t) const;
 
   private:
     void

@@ -71,6 +71,9 @@ namespace PeriArlequin
 
     /** Row sums (diagonal solver) or the inverse diagonal of A (CG preconditioner). */
     VectorType                        diagonal;
+    /** 1 for the multipliers with an equation, 0 where A has a zero row (all prescribed). */
+    VectorType                        free_rows;
+    VectorType                        free_rhs;
     DiagonalMatrix<VectorType>        preconditioner;
     LinearOperator<VectorType>        a_operator;
     VectorType                        fe_scratch;

@@ -195,6 +195,9 @@ namespace PeriArlequin
     /** Blending weight alpha of owned and ghost particles. */
     ArrayView<const double>
     blending_weights() const;
+    /** Does a prescribed region or a displacement boundary layer hold owned particle @p i? */
+    bool
+    is_prescribed(const unsigned int i) const;
     /** Is owned particle @p i a slave (1 - alpha below Coupling/Minimum PD weight)? */
     bool
     is_slave(const unsigned int i) const;
@@ -262,8 +265,8 @@ namespace PeriArlequin
     compute_blending_weights();
     /**
      * The particles within one lattice spacing of a face with a traction, which carry it as
-     * the force density t / dx; a displacement condition on a face that non-slave particles
-     * touch is an error (Peridynamics/Prescribed region moves particles).
+     * the force density t / dx, and the non-slave particles within two bond reaches
+     * (2 delta + dx) of a face with a displacement condition, which follow it.
      */
     void
     find_boundary_layers();

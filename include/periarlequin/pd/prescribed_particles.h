@@ -1,18 +1,23 @@
 #ifndef periarlequin_pd_prescribed_particles_h
 #define periarlequin_pd_prescribed_particles_h
 
+#include <deal.II/base/function.h>
+
 #include <periarlequin/pd/particle_state.h>
 #include <periarlequin/pd/pd_parameters.h>
 
+#include <array>
 #include <vector>
 
 namespace PeriArlequin
 {
   /**
-   * The owned particles in the regions of Peridynamics/Prescribed motion N, whose prescribed
-   * components follow a function of time (displacement or velocity) instead of the equation
-   * of motion. The velocity and acceleration of a prescribed component come from central
-   * differences of the function over one time step, so that Verlet reproduces the motion.
+   * The owned particles whose prescribed components follow a function of position and time
+   * (displacement or velocity) instead of the equation of motion: those in the regions of
+   * Peridynamics/Prescribed region N, and those in the boundary layer of a face with a
+   * displacement condition (add_boundary_layer()). The velocity and acceleration of a
+   * prescribed component come from central differences of the function over one time step,
+   * so that Verlet reproduces the motion.
    */
   template <int dim>
   class PrescribedParticles
@@ -23,6 +28,20 @@ namespace PeriArlequin
     /** Collect the owned particles (the first @p n_owned of @p positions) in the regions. */
     void
     reinit(ArrayView<const Point<dim>> positions, const unsigned int n_owned);
+
+    /**
+     * Prescribe the displacement @p function on the @p components of owned particle @p i
+     * (a particle of a boundary layer), unless a region already prescribes it.
+     */
+    void
+    add(const unsigned int           i,
+        const Point<dim>            &position,
+        Function<dim>               &function,
+        const std::array<bool, dim> &components);
+
+    /** Does a prescribed region or boundary layer hold owned particle @p i? */
+    bool
+    contains(const unsigned int i) const;
 
     /** Does no rank hold a prescribed particle? (collective) */
     bool
@@ -49,22 +68,26 @@ namespace PeriArlequin
     {
       for (const auto &p : particles)
         for (unsigned int d = 0; d < dim; ++d)
-          if (parameters.prescribed[p.region].components[d])
+          if (p.components[d])
             visit(p.local_index, d);
     }
 
   private:
     struct Particle
     {
-      unsigned int   local_index;
-      unsigned int   region;
-      Point<dim>     position;
+      unsigned int          local_index;
+      Function<dim>        *function;
+      std::array<bool, dim> components;
+      bool                  prescribes_velocity;
+      Point<dim>            position;
       /** Prescribed velocity and acceleration at the current time (prescribed components). */
       Tensor<1, dim> velocity, acceleration;
     };
 
     const Parameters::Peridynamics<dim> &parameters;
     std::vector<Particle>                particles;
+    /** Is owned particle i prescribed? */
+    std::vector<bool>                    is_prescribed;
   };
 } // namespace PeriArlequin
 

@@ -7,7 +7,10 @@
 
 #include <periarlequin/postprocess/postprocessor.h>
 
+#include <array>
+#include <limits>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,6 +89,72 @@ namespace PeriArlequin
   };
 
   /**
+   * Initiation and kink of a crack that leaves a pre-crack, from the damage field, in the x-y
+   * plane (in 3D, projected on it: the crack front runs along z).
+   *
+   * Definitions. The initial tip and the crack's direction are given. A new cracked particle
+   * is one cracked now that was not at the first record, ahead of the tip (within 120 degrees
+   * of the crack direction). Initiation is the first record at which a particle within a
+   * horizon of the tip has more broken bonds than at the first record; growth is the first
+   * record with a new cracked particle a horizon or more from the tip. The kink angle is the
+   * direction, measured from the crack direction (counter-clockwise positive), of the
+   * least-squares line through the tip (the principal axis of the second moment about the tip)
+   * of the new cracked particles at distances within the fit range.
+   */
+  template <int dim>
+  class CrackInitiation
+  {
+  public:
+    using CrackedParticle = typename CrackTracker<dim>::CrackedParticle;
+
+    /**
+     * @p direction [rad]; @p fit_range: the least and largest distance from the tip of the
+     * particles the kink angle fits [m].
+     */
+    CrackInitiation(const Point<dim>             &tip,
+                    const double                  direction,
+                    const double                  horizon,
+                    const std::array<double, 2>  &fit_range);
+
+    /**
+     * The cracked particles at @p time (the same on every rank) and the number of broken bonds
+     * of the particles within a horizon of the tip.
+     */
+    void
+    update(const double                        time,
+           const std::vector<CrackedParticle> &cracked,
+           const unsigned long long            broken_near_tip);
+
+    /** In-plane distance of @p x from the tip [m]. */
+    double
+    distance_from_tip(const Point<dim> &x) const;
+
+    /** Time of initiation, growth by a horizon [s]; NaN before. */
+    double
+    initiation_time() const;
+    double
+    growth_time() const;
+    /** Kink angle at the last record [rad]; NaN with fewer than three particles to fit. */
+    double
+    kink_angle() const;
+    unsigned int
+    n_fitted_particles() const;
+
+  private:
+    Point<dim>                        tip;
+    Tensor<1, 2>                      direction;
+    double                            horizon;
+    std::array<double, 2>             fit_range;
+    bool                              first_record = true;
+    unsigned long long                initial_broken_near_tip = 0;
+    std::set<types::particle_index>   initially_cracked;
+    double                            initiation = std::numeric_limits<double>::quiet_NaN();
+    double                            growth     = std::numeric_limits<double>::quiet_NaN();
+    double                            angle      = std::numeric_limits<double>::quiet_NaN();
+    unsigned int                      n_fitted   = 0;
+  };
+
+  /**
    * The crack-length measure of a set of broken bonds: sum |xi| V v over the broken bonds,
    * each once, divided by the same sum over the bonds that cross a unit area of a plane
    * normal to a lattice axis. It is exactly the area (2D: the length) of a straight crack
@@ -105,7 +174,10 @@ namespace PeriArlequin
    * G0 times that area (Peridynamics/Critical energy release rate; 2D: per unit thickness).
    * Maps of the damaged particles are written as CSV (x, y[, z], damage; a first line
    * "# t = <time> s; domain <lower corner> <upper corner>") with the ParaView output
-   * (Output/Output interval), for scripts/plot_cracks.sh.
+   * (Output/Output interval), for scripts/plot_cracks.sh. Given the initial tip of a
+   * pre-crack, also its initiation, growth and kink angle (CrackInitiation), with the stress
+   * intensity factors and energy release rate of the crack-tip field at those times when the
+   * boundaries carry one.
    */
   template <int dim>
   class CrackDiagnostics : public Postprocessor<dim>
@@ -119,6 +191,11 @@ namespace PeriArlequin
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
 
   private:
+    /** Update the initiation diagnostics and add their columns (and say when it happens). */
+    void
+    report_initiation(const Simulator<dim>                                           &simulator,
+                      const std::vector<typename CrackTracker<dim>::CrackedParticle> &cracked,
+                      EnergyHistory                                                  &history);
     /** Write the damaged particles to <base>_damage_<step>.csv on rank 0. */
     void
     write_damage_map(const Simulator<dim> &simulator) const;
@@ -131,6 +208,15 @@ namespace PeriArlequin
     unsigned int                       speed_window       = 5;
     unsigned int                       reported_branches  = 4;
     std::unique_ptr<CrackTracker<dim>> tracker;
+    /** Empty: no initiation and kink diagnostics. */
+    std::string                        initial_tip_text;
+    /** In degrees. */
+    double                             initial_direction = 0;
+    /** In horizons. */
+    std::array<double, 2>              kink_fit_range    = {{1., 5.}};
+    std::unique_ptr<CrackInitiation<dim>> initiation;
+    /** K_I, K_II [Pa m^(1/2)] and G [J/m^2] of the crack-tip field at initiation and growth. */
+    std::array<double, 3> load_at_initiation, load_at_growth;
     double                             initial_area = 0;
     /** Damaged particles (id, position, damage) of the last record, sorted by id. */
     std::vector<std::pair<typename CrackTracker<dim>::CrackedParticle, double>> damaged;

@@ -1,0 +1,138 @@
+#!/bin/bash
+# The mixed-mode kinking study of doc/mixed_mode.md (section 6.4 of the paper): a 6.25 cm
+# square (E = 29 GPa, nu = 0.29, rho = 2400 kg/m^3, G0 = 36 kJ/m^2) with a crack from the middle
+# of its left side to the centre, loaded by the crack-tip field of eq. 82 on its four sides
+# with K_eff = Kdot t at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
+# Pure PD and coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
+# beyond, weak coupling, force blending). Prints the table of doc/mixed_mode.md:
+#   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
+# <groups> (default: all) names the groups to run: angles, ramp, convergence, coupled,
+# stress. Takes tens of minutes for all.
+set -euo pipefail
+usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
+build=$(cd "${1:?$usage}" && pwd)
+work=${2:?$usage}
+ranks=${3:-1}
+groups=${4:-angles ramp convergence coupled stress}
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$work"
+cd "$work"
+
+calc() { awk "BEGIN { printf \"%.15g\\n\", $1 }"; }
+
+# case_file <name> <plane: strain|stress> <psi [deg]> <T_c [s]> <lattice sites per side>
+#           <horizon factor> <FE cells per side> <coupled: 0|1>
+case_file() {
+  local name=$1 plane=$2 psi=$3 tc=$4 n=$5 m=$6 cells=$7 coupled=$8
+  local L=0.03125 dx c kc kdot end
+  dx=$(calc "2 * $L / $n")
+  c=$(calc "2 * $L / $cells")
+  # K_c = sqrt(G0 E'), E' = E / (1 - nu^2) in plane strain, E in plane stress.
+  if [ "$plane" = strain ]; then kc=$(calc "sqrt(36e3 * 29e9 / (1 - 0.29 ^ 2))"); else kc=$(calc "sqrt(36e3 * 29e9)"); fi
+  kdot=$(calc "$kc / $tc")
+  end=$(calc "1.6 * $tc")
+  cat << EOF
+set Dimension = 2
+subsection Geometry
+  set Lower corner = -$L, -$L
+  set Upper corner = $L, $L
+  set Subdivisions = $cells, $cells
+end
+subsection Material
+  set Young's modulus       = 29e9
+  set Poisson's ratio       = 0.29
+  set Density               = 2400
+  set Two-dimensional model = plane $plane
+end
+subsection Peridynamics
+  set Lattice spacing              = $dx
+  set Horizon factor               = $m
+  set Fracture                     = true
+  set Critical energy release rate = 36e3
+  set Pre-cracks                   = -$L, 0 : 0, 0
+EOF
+  if [ "$coupled" = 0 ]; then
+    echo "  set Region = -$L, -$L : $L, $L"
+    echo "end"
+  else
+    # PD: x <= A c, |y| <= H c, with H and A from the kink (5 horizons at up to 61 degrees
+    # plus 2 horizons of margin); overlaps of W = 2 cells.
+    local delta H A W x1 y1 ox oy
+    delta=$(calc "$m * $dx")
+    H=$(calc "int((7 * $delta) / $c + 0.999)")
+    A=$(calc "int((6 * $delta) / $c + 0.999)")
+    W=2
+    x1=$(calc "$A * $c"); y1=$(calc "$H * $c")
+    ox=$(calc "($A + $W) * $c"); oy=$(calc "($H + $W) * $c")
+    echo "  set Region = -$L, -$y1 : $x1, $y1"
+    echo "end"
+    cat << EOF
+subsection Coupling
+  set Method                = weak
+  set Blending              = force
+  set Overlap region        = -$L, $y1 : $ox, $oy ; -$L, -$oy : $ox, -$y1 ; $x1, -$y1 : $ox, $y1
+  set Finite element region = -$L, $oy : $L, $L ; -$L, -$L : $L, -$oy ; $ox, -$oy : $L, $oy
+end
+EOF
+  fi
+  cat << EOF
+subsection Boundary conditions
+  subsection Crack tip field
+    set Boundary ids            = 0, 1, 2, 3
+    set Tip                     = 0, 0
+    set Crack direction         = 0
+    set Stress intensity factor = $kdot*t
+    set Phase angle             = $psi
+  end
+end
+subsection Time
+  set Time step = $(calc "1e-7 * 128 / $n")
+  set End time  = $end
+end
+subsection Postprocess
+  set List of postprocessors = energies, cracks
+  subsection cracks
+    set Initial tip = 0, 0
+  end
+end
+subsection Output
+  set Directory            = $name
+  set Output interval      = 0
+  set Energy interval      = 20
+  set Progress interval    = 60
+  set Print timing summary = true
+end
+EOF
+}
+
+run() {
+  local name=$1
+  shift
+  case_file "$name" "$@" > "$name.prm"
+  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$name.prm" > "$name.log" 2>&1 || true
+}
+
+# Phase angles psi = atan(K_II / K_I): 0, and K_II / K_I = 0.25, 0.5, 1, 2.
+angles="0 14.036 26.565 45 63.435"
+tc=3e-4
+for group in $groups; do
+  case $group in
+    angles)
+      for psi in $angles; do run "pd_strain_$psi" strain "$psi" $tc 128 3 32 0; done ;;
+    ramp)
+      for psi in 0 45; do run "pd_strain_${psi}_slow" strain "$psi" 6e-4 128 3 32 0; done ;;
+    convergence)
+      # dx halved at a fixed horizon factor (delta halved), and at a fixed horizon (m doubled).
+      for psi in 0 45; do
+        run "pd_strain_${psi}_fine" strain "$psi" $tc 256 3 64 0
+        run "pd_strain_${psi}_m6" strain "$psi" $tc 256 6 32 0
+      done ;;
+    coupled)
+      for psi in $angles; do run "coupled_strain_$psi" strain "$psi" $tc 128 3 32 1; done
+      run coupled8_strain_45 strain 45 $tc 128 3 16 1 ;;
+    stress)
+      for psi in 0 45; do run "pd_stress_$psi" stress "$psi" $tc 128 3 32 0; done ;;
+    *) echo "unknown group $group"; exit 1 ;;
+  esac
+done
+"$here/mixed_mode_table.sh" $(ls -d pd_* coupled* 2> /dev/null | grep -v '\.' | sort -u)
