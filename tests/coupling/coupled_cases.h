@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 /**
@@ -315,6 +316,67 @@ namespace PeriArlequinTests
                             "subsection Output\n  set Energy interval = 25\nend\n"
                             "subsection Postprocess\n  set List of postprocessors = energies, "
                             "cracks\nend\n");
+  }
+  /**
+   * The mixed-mode case of the paper's section 6.4 (scripts/mixed_mode.sh): a 62.5 mm square
+   * (E = 29 GPa, nu = 0.29, rho = 2400, G0 = 36 kJ/m^2, plane strain) with a crack from the
+   * middle of its left side to the centre, the crack-tip field on its four sides with
+   * K_eff = Kdot t at the phase angle @p psi [deg], Kdot such that G = G0 at @p critical_time,
+   * run to @p end_time; the time step is 1e-7 s x 128 / n. A lattice of @p n sites per side, horizon factor @p m, @p cells FE
+   * cells per side; coupled: PD for x <= A c, |y| <= H c (c the cell size, H c >= 7 delta,
+   * A c >= 6 delta), overlaps of 2 cells, FE beyond, weak coupling, force blending, damping constant 10 (the
+   * default 30 over-damps these narrow overlaps at this time step). The
+   * crack diagnostics follow the tip at the centre.
+   */
+  inline std::string
+  mixed_mode_case(const bool         coupled,
+                  const unsigned int n,
+                  const double       m,
+                  const unsigned int cells,
+                  const double       psi,
+                  const double       critical_time,
+                  const double       end_time)
+  {
+    const double       L = 0.03125, dx = 2 * L / n, c = 2 * L / cells, delta = m * dx;
+    const double       kc   = std::sqrt(36e3 * 29e9 / (1 - 0.29 * 0.29));
+    std::ostringstream text;
+    text << std::setprecision(15) << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = " << -L << ", " << -L
+         << "\n  set Upper corner = " << L << ", " << L << "\n  set Subdivisions = " << cells
+         << ", " << cells << "\nend\n"
+         << "subsection Material\n  set Young's modulus = 29e9\n  set Poisson's ratio = 0.29\n"
+         << "  set Density = 2400\n  set Two-dimensional model = plane strain\nend\n"
+         << "subsection Peridynamics\n  set Lattice spacing = " << dx
+         << "\n  set Horizon factor = " << m
+         << "\n  set Fracture = true\n  set Critical energy release rate = 36e3\n"
+         << "  set Pre-cracks = " << -L << ", 0 : 0, 0\n";
+    if (!coupled)
+      text << "  set Region = " << -L << ", " << -L << " : " << L << ", " << L << "\nend\n";
+    else
+      {
+        const double y1 = std::ceil(7 * delta / c - 1e-9) * c;
+        const double x1 = std::ceil(6 * delta / c - 1e-9) * c;
+        const double oy = y1 + 2 * c, ox = x1 + 2 * c;
+        text << "  set Region = " << -L << ", " << -y1 << " : " << x1 << ", " << y1 << "\nend\n"
+             << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
+             << "  set Damping constant = 10\n"
+             << "  set Overlap region = " << -L << ", " << y1 << " : " << ox << ", " << oy
+             << " ; " << -L << ", " << -oy << " : " << ox << ", " << -y1 << " ; " << x1 << ", "
+             << -y1 << " : " << ox << ", " << y1 << "\n"
+             << "  set Finite element region = " << -L << ", " << oy << " : " << L << ", " << L
+             << " ; " << -L << ", " << -L << " : " << L << ", " << -oy << " ; " << ox << ", "
+             << -oy << " : " << L << ", " << oy << "\nend\n";
+      }
+    text << "subsection Boundary conditions\n  subsection Crack tip field\n"
+         << "    set Boundary ids = 0, 1, 2, 3\n    set Tip = 0, 0\n"
+         << "    set Stress intensity factor = " << kc / critical_time << "*t\n"
+         << "    set Phase angle = " << psi << "\n  end\nend\n"
+         << "subsection Time\n  set Time step = " << 1e-7 * 128 / n
+         << "\n  set End time = " << end_time << "\nend\n"
+         << "subsection Postprocess\n  set List of postprocessors = cracks\n"
+         << "  subsection cracks\n    set Initial tip = 0, 0\n  end\nend\n"
+         << quiet_output() << "subsection Output\n  set Energy interval = 10\nend\n";
+    return text.str();
   }
 } // namespace PeriArlequinTests
 

@@ -1,0 +1,38 @@
+// Crack initiation in mode I against G0: the paper's section 6.4 specimen (62.5 mm square,
+// E = 29 GPa, nu = 0.29, G0 = 36 kJ/m^2, plane strain) in pure PD with m = 3, its edge crack
+// loaded by the crack-tip field K_I = Kdot t (G = G0 at 300 us, about ten shear-wave transits
+// of the square: quasi-static), on two lattices: 64 and 128 sites per side (delta = 2.93 and
+// 1.46 mm). Initiation is the first new broken bond of a particle within a horizon of the tip
+// (CrackInitiation); G = K_I^2 (1 - nu^2) / E there is compared with G0.
+//  - Scale invariance: under the sqrt(r) field, bond stretches at r ~ delta scale as
+//    K / sqrt(delta), and so does the critical stretch sqrt(5 pi G0 / (12 E delta)); the
+//    load at which the first bond breaks is therefore the same G for any delta at a fixed m
+//    (up to the domain's size, 21 and 43 horizons here, and the record interval: 10 steps,
+//    1 and 2 us, 0.7 % of G). Asserted: the two G_init / G0 agree within 3 %.
+//  - Against G0: a critical stretch derived from G0 breaks the first bond at the tip later
+//    than LEFM's G = G0 (doc/mixed_mode.md: 1.12-1.20 G0 at m = 3, lower at larger m).
+//    Asserted: G_init / G0 in [0.9, 1.25], the band the PD model holds at m = 3; the
+//    issue's 10 % is not met at this horizon factor (see the doc).
+
+#include "coupled_cases.h"
+
+using namespace PeriArlequinTests;
+using namespace PeriArlequin;
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] {
+    std::vector<double> ratios;
+    for (const unsigned int n : {64u, 128u})
+      {
+        auto simulator = make_simulator<2>(mixed_mode_case(false, n, 3, 16, 0, 3e-4, 3.5e-4));
+        simulator->run();
+        const auto g = simulator->get_energy_history().column("initiation_G");
+        ratios.push_back(g.back() / 36e3);
+        check_above("lattice " + std::to_string(n) + ": G_init / G0 >= 0.9", ratios.back(), 0.9);
+        check_below("lattice " + std::to_string(n) + ": G_init / G0 <= 1.25", ratios.back(), 1.25);
+      }
+    check("G_init / G0 at delta = 1.46 mm against delta = 2.93 mm", ratios[1], ratios[0], 0.03);
+  });
+}
