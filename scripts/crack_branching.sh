@@ -16,13 +16,13 @@ ranks=${3:-1}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
+source "$here/study_lib.sh"
 
 dx=3.125e-4
 # case <name> <height [m]> <PD strip half width [m], 0: pure PD> <FE cell [m]> <overlap cells>
 case_file() {
   local name=$1 height=$2 half=$3 cell=$4 layers=$5
   local mid nx ny
-  calc() { awk "BEGIN { print $1 }"; }
   mid=$(calc "$height / 2")
   nx=$(calc "int(0.1 / $cell + 0.5)")
   ny=$(calc "int($height / $cell + 0.5)")
@@ -97,11 +97,8 @@ EOF
 }
 
 run() {
-  local name=$1
-  shift
-  case_file "$name" "$@" > "$name.prm"
-  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$name.prm" > "$name.log" 2>&1 || true
-  "$here/plot_cracks.sh" "$name" "${reference:-}" > /dev/null || true
+  run_case "$@"
+  "$here/plot_cracks.sh" "$1" "${reference:-}" > /dev/null || true
 }
 
 # 100 x 40 mm: the branches spread to y = 20 +- 13 mm, so the PD strip must nearly fill the

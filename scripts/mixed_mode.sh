@@ -19,7 +19,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
 
-calc() { awk "BEGIN { printf \"%.15g\\n\", $1 }"; }
+source "$here/study_lib.sh"
 
 # case_file <name> <plane: strain|stress> <psi [deg]> <T_c [s]> <lattice sites per side>
 #           <horizon factor> <FE cells per side> <coupled: 0|1>
@@ -107,12 +107,7 @@ end
 EOF
 }
 
-run() {
-  local name=$1
-  shift
-  case_file "$name" "$@" > "$name.prm"
-  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$name.prm" > "$name.log" 2>&1 || true
-}
+run() { run_case "$@"; }
 
 # Phase angles psi = atan(K_II / K_I): 0, and K_II / K_I = 0.25, 0.5, 1, 2.
 angles="0 14.036 26.565 45 63.435"
