@@ -26,9 +26,9 @@ namespace PeriArlequin
                                parameters.damping_overlap_width :
                                blending.overlap_width(pd_zone.reference_positions()[i]);
         // Prescribed particles keep their prescribed motion: no damping force.
+        const bool damped = parameters.damping && !pd_zone.is_prescribed(i);
         coefficient.push_back(
-          parameters.damping && !pd_zone.is_prescribed(i) ? parameters.damping_constant * wave_speed * alpha * alpha / width :
-                               0.);
+          damped ? parameters.damping_constant * wave_speed * alpha * alpha / width : 0.);
         largest = std::max(largest, coefficient.back());
       }
     largest = Utilities::MPI::max(largest, pd_zone.get_communicator());

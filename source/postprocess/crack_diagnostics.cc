@@ -305,7 +305,7 @@ namespace PeriArlequin
       initiation = time;
 
     // Second moment about the tip of the new cracked particles in the fit range.
-    const double   ahead = std::cos(2. * numbers::PI / 3.);
+    const double          ahead = std::cos(2. * numbers::PI / 3.);
     SymmetricTensor<2, 2> moment;
     Tensor<1, 2>          sum;
     n_fitted = 0;
@@ -450,7 +450,8 @@ namespace PeriArlequin
     reported_branches = prm.get_integer("Reported branches");
     initial_tip_text  = prm.get("Initial tip");
     initial_direction = prm.get_double("Initial direction");
-    const auto range  = Utilities::string_to_double(Utilities::split_string_list(prm.get("Kink fit range")));
+    const auto range =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Kink fit range")));
     if (!(range[1] > range[0]))
       throw_invalid_parameter("Postprocess/cracks/Kink fit range",
                               prm.get("Kink fit range"),

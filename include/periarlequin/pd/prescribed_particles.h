@@ -15,7 +15,7 @@ namespace PeriArlequin
    * The owned particles whose prescribed components follow a function of position and time
    * (displacement or velocity) instead of the equation of motion: those in the regions of
    * Peridynamics/Prescribed region N, and those in the boundary layer of a face with a
-   * displacement condition (add_boundary_layer()). The velocity and acceleration of a
+   * displacement condition (add()). The velocity and acceleration of a
    * prescribed component come from central differences of the function over one time step,
    * so that Verlet reproduces the motion.
    */
