@@ -5,7 +5,8 @@
 # with K_eff = Kdot t at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
 # Pure PD and coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
 # beyond, weak coupling, force blending, damping constant 10: the default 30 over-damps the
-# narrow overlaps at this time step). Prints the table of doc/mixed_mode.md:
+# narrow overlaps at this time step). Prints the table of doc/mixed_mode.md and draws each
+# run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
 #   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
 # coupled, stress. Takes about an hour and a half for all on one core.
@@ -99,7 +100,7 @@ subsection Postprocess
 end
 subsection Output
   set Directory            = $name
-  set Output interval      = 0
+  set Output interval      = $(calc "int($end / (1e-7 * 128 / $n) + 0.5)")
   set Energy interval      = 20
   set Progress interval    = 60
   set Print timing summary = true
@@ -107,7 +108,12 @@ end
 EOF
 }
 
-run() { run_case "$@"; }
+# Each run writes its first and last state; the damage map of the last goes to
+# <name>/damage.png.
+run() {
+  run_case "$@"
+  "$here/plot_cracks.sh" "$1" > /dev/null 2>&1 || true
+}
 
 # Phase angles psi = atan(K_II / K_I): 0, and K_II / K_I = 0.25, 0.5, 1, 2.
 angles="0 14.036 26.565 45 63.435"
