@@ -9,13 +9,13 @@
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
 #   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
-# coupled, stress. Takes about an hour and a half for all on one core.
+# coupled, m6_coupled, stress. Takes about an hour and a half for all on one core.
 set -euo pipefail
 usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-angles angles_m6 ramp convergence coupled stress}
+groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled stress}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
@@ -136,6 +136,10 @@ for group in $groups; do
     coupled)
       for psi in $angles; do run "coupled_strain_$psi" strain "$psi" $tc 128 3 32 1; done
       run coupled8_strain_45 strain 45 $tc 128 3 16 1 ;;
+    m6_coupled)
+      # m = 6 through the coupling: the 256-site lattice leaves room for the PD box.
+      run pd_strain_45_n256_m6 strain 45 $tc 256 6 32 0
+      run coupled8_strain_45_n256_m6 strain 45 $tc 256 6 32 1 ;;
     stress)
       for psi in 0 45; do run "pd_stress_$psi" stress "$psi" $tc 128 3 32 0; done ;;
     *) echo "unknown group $group"; exit 1 ;;
