@@ -448,7 +448,22 @@ namespace PeriArlequin
     branch_separation = prm.get_double("Branch separation");
     speed_window      = prm.get_integer("Speed window");
     reported_branches = prm.get_integer("Reported branches");
-    initial_tip_text  = prm.get("Initial tip");
+    const std::string tip_text = prm.get("Initial tip");
+    has_initial_tip            = !tip_text.empty();
+    if (has_initial_tip)
+      {
+        const std::vector<std::string> coordinates = Utilities::split_string_list(tip_text);
+        bool                           valid       = coordinates.size() == dim;
+        for (unsigned int d = 0; valid && d < dim; ++d)
+          valid = Patterns::Double().match(coordinates[d]);
+        if (!valid)
+          throw_invalid_parameter("Postprocess/cracks/Initial tip",
+                                  tip_text,
+                                  "empty or " + std::to_string(dim) +
+                                    " coordinates 'x, y" + (dim == 3 ? ", z" : "") + "' [m]");
+        for (unsigned int d = 0; d < dim; ++d)
+          initial_tip[d] = Utilities::string_to_double(coordinates[d]);
+      }
     initial_direction = prm.get_double("Initial direction");
     const auto range =
       Utilities::string_to_double(Utilities::split_string_list(prm.get("Kink fit range")));
@@ -472,19 +487,10 @@ namespace PeriArlequin
     if (!tracker)
       tracker = std::make_unique<CrackTracker<dim>>(link_distance * parameters.lattice_spacing,
                                                     branch_separation * parameters.horizon());
-    if (!initiation && !initial_tip_text.empty())
+    if (!initiation && has_initial_tip)
       {
-        const std::vector<double> tip = Utilities::string_to_double(
-          Utilities::split_string_list(initial_tip_text));
-        if (tip.size() != dim)
-          throw_invalid_parameter("Postprocess/cracks/Initial tip",
-                                  initial_tip_text,
-                                  "empty or " + std::to_string(dim) + " coordinates [m]");
-        Point<dim> point;
-        for (unsigned int d = 0; d < dim; ++d)
-          point[d] = tip[d];
         initiation = std::make_unique<CrackInitiation<dim>>(
-          point,
+          initial_tip,
           initial_direction * numbers::PI / 180.,
           parameters.horizon(),
           std::array<double, 2>{{kink_fit_range[0] * parameters.horizon(),

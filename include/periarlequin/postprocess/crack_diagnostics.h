@@ -208,8 +208,9 @@ namespace PeriArlequin
     unsigned int                       speed_window       = 5;
     unsigned int                       reported_branches  = 4;
     std::unique_ptr<CrackTracker<dim>> tracker;
-    /** Empty: no initiation and kink diagnostics. */
-    std::string                        initial_tip_text;
+    /** Without an initial tip, no initiation and kink diagnostics. */
+    bool                               has_initial_tip = false;
+    Point<dim>                         initial_tip;
     /** In degrees. */
     double                             initial_direction = 0;
     /** In horizons. */
