@@ -264,7 +264,7 @@ namespace PeriArlequin
     // layer, inside the domain.
     const double dx    = parameters.lattice_spacing;
     const double depth = 2. * (parameters.horizon() + 0.5 * dx);
-    const auto   x       = ghosts.reference_positions();
+    const auto   x     = ghosts.reference_positions();
     traction_faces.assign(ghosts.n_owned(), 0);
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       {
