@@ -145,6 +145,23 @@ namespace PeriArlequinTests
     unit_x(0) = 1;
     fe_zone.interpolate(Functions::ConstantFunction<dim>(unit_x), is_x_component);
   }
+  /**
+   * Call @p visit(local DoF index, support point, component) for every locally owned DoF of
+   * the FE zone of @p simulator; nothing if the case has no FE zone.
+   */
+  template <int dim, typename Visitor>
+  void
+  for_each_fe_dof(const PeriArlequin::Simulator<dim> &simulator, const Visitor &visit)
+  {
+    if (!simulator.has_fe_zone())
+      return;
+    std::vector<unsigned int> dofs, components;
+    std::vector<Point<dim>>   points;
+    simulator.get_fe_zone().support_points(dofs, points, components);
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      visit(dofs[k], points[k], components[k]);
+  }
+
   /** Assert measured > bound, printing the verdict. */
   inline void
   check_above(const std::string &what, const double measured, const double bound)

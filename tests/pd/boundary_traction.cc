@@ -55,17 +55,12 @@ namespace
       for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
         if (!pd->is_slave(i))
           sum += pd->particle_mass(i) * pd->get_state().velocities()[i][1];
-    if (simulator.has_fe_zone())
-      {
-        const auto               &fe = simulator.get_fe_zone();
-        std::vector<unsigned int> dofs, components;
-        std::vector<Point<2>>     points;
-        fe.support_points(dofs, points, components);
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          if (components[k] == 1)
-            sum += fe.lumped_mass().local_element(dofs[k]) *
-                   simulator.get_velocity().local_element(dofs[k]);
-      }
+    for_each_fe_dof(simulator,
+                    [&](const unsigned int dof, const Point<2> &, const unsigned int component) {
+                      if (component == 1)
+                        sum += simulator.get_fe_zone().lumped_mass().local_element(dof) *
+                               simulator.get_velocity().local_element(dof);
+                    });
     return Utilities::MPI::sum(sum, MPI_COMM_WORLD);
   }
 } // namespace

@@ -83,17 +83,12 @@ namespace
           worst = std::max(worst, (pd->get_state().displacements()[i] - affine(x)).norm());
           scale = std::max(scale, affine(x).norm());
         }
-    if (simulator.has_fe_zone())
-      {
-        const auto               &fe = simulator.get_fe_zone();
-        std::vector<unsigned int> dofs, components;
-        std::vector<Point<2>>     points;
-        fe.support_points(dofs, points, components);
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          worst = std::max(worst,
-                           std::abs(simulator.get_displacement().local_element(dofs[k]) -
-                                    affine(points[k])[components[k]]));
-      }
+    for_each_fe_dof(simulator,
+                    [&](const unsigned int dof, const Point<2> &x, const unsigned int component) {
+                      worst = std::max(worst,
+                                       std::abs(simulator.get_displacement().local_element(dof) -
+                                                affine(x)[component]));
+                    });
     return Utilities::MPI::max(worst, MPI_COMM_WORLD) /
            Utilities::MPI::max(scale, MPI_COMM_WORLD);
   }
