@@ -27,7 +27,8 @@ branches() { head -1 "$1" | tr ',' '\n' | sed -n 's/^branch_\([0-9]*\)_x$/\1/p';
   echo "set output '$dir/damage.png'; set size ratio -1; set xlabel 'x [m]'; set ylabel 'y [m]'"
   echo "set title 'damage at t = $(time_of "$map") s'; set cbrange [0:0.6]; $(ranges "$map")"
   echo "set palette defined (0 '#f0f0f0', 0.2 '#fdae61', 0.35 '#d7191c', 0.6 '#2b0000')"
-  echo "plot '$map' skip 2 using 1:2:3 with points pt 5 ps 0.25 palette notitle"
+  # The damage column: 3 in 2D, 4 in 3D (a 3D map is seen along z, its layers overlaid).
+  echo "plot '$map' skip 2 using 1:2:$(sed -n 2p "$map" | tr ',' '\n' | grep -nx damage | cut -d: -f1) with points pt 5 ps 0.25 palette notitle"
   echo "set output '$dir/tips.png'; set size noratio; unset cbrange; set autoscale; set title ''"
   echo "set xlabel 'time [s]'; set ylabel 'tip x, path length [m]'; set key left top"
   t=$(column "$energy" time)
