@@ -9,13 +9,13 @@
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
 #   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
-# coupled, m6_coupled, stress. Takes about an hour and a half for all on one core.
+# coupled, m6_coupled, m6_coupled_angles, stress. Takes about two and a half hours for all on one core.
 set -euo pipefail
 usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled stress}
+groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles stress}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
@@ -140,6 +140,12 @@ for group in $groups; do
       # m = 6 through the coupling: the 256-site lattice leaves room for the PD box.
       run pd_strain_45_n256_m6 strain 45 $tc 256 6 32 0
       run coupled8_strain_45_n256_m6 strain 45 $tc 256 6 32 1 ;;
+    m6_coupled_angles)
+      # The same at the other phase angles.
+      for psi in 14.036 26.565 63.435; do
+        run "pd_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 0
+        run "coupled8_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 1
+      done ;;
     stress)
       for psi in 0 45; do run "pd_stress_$psi" stress "$psi" $tc 128 3 32 0; done ;;
     *) echo "unknown group $group"; exit 1 ;;

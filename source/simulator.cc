@@ -215,7 +215,12 @@ namespace PeriArlequin
           << " s, longitudinal wave speed " << material.longitudinal_wave_speed(dim)
           << " m/s" << std::endl;
     if (pd_zone && pd_parameters.fracture)
-      pcout << "  critical stretch " << pd_zone->get_critical_stretch() << std::endl;
+      {
+        pcout << "  fracture criterion: " << pd_parameters.fracture_criterion;
+        if (pd_zone->get_critical_stretch() > 0)
+          pcout << ", critical stretch " << pd_zone->get_critical_stretch();
+        pcout << std::endl;
+      }
     if (coupling)
       {
         const auto [n_overlap, n_slaves] = coupling->n_coupled_particles();

@@ -8,9 +8,17 @@ namespace PeriArlequin
   {}
 
   template <int dim>
+  bool
+  FractureCriterion<dim>::needs_particle_scalars() const
+  {
+    return false;
+  }
+
+  template <int dim>
   void
   CriticalStretchCriterion<dim>::initialize(const Parameters::Peridynamics<dim> &parameters,
-                                            const PDMaterialModel<dim>          &model)
+                                            const PDMaterialModel<dim>          &model,
+                                            const BondFamilies<dim> &)
   {
     if (parameters.critical_stretch == 0 && !(parameters.energy_release_rate > 0))
       throw_invalid_parameter("Peridynamics/Critical energy release rate",
@@ -24,8 +32,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>                 &bonds,
-                                             ArrayView<const Tensor<1, dim>>  u) const
+  CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
+                                             ArrayView<const Tensor<1, dim>>  u,
+                                             ArrayView<const double>) const
   {
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
@@ -47,10 +56,73 @@ namespace PeriArlequin
     return stretch;
   }
 
+  template <int dim>
+  void
+  CriticalBondEnergyCriterion<dim>::initialize(const Parameters::Peridynamics<dim> &parameters,
+                                               const PDMaterialModel<dim>          &material,
+                                               const BondFamilies<dim>             &bonds)
+  {
+    if (!(parameters.energy_release_rate > 0))
+      throw_invalid_parameter("Peridynamics/Critical energy release rate",
+                              parameters.energy_release_rate,
+                              "a value > 0 [J/m^2] with Fracture criterion = critical bond "
+                              "energy");
+    if (parameters.critical_stretch > 0)
+      throw_invalid_parameter("Peridynamics/Critical stretch",
+                              parameters.critical_stretch,
+                              "0 with Fracture criterion = critical bond energy (its critical "
+                              "bond energy comes from Critical energy release rate)");
+    double cut_per_unit_area = 0;
+    for (const auto &entry : bonds.stencil)
+      if (entry.xi[0] > 0)
+        cut_per_unit_area += entry.xi[0] * entry.volume;
+    model            = &material;
+    critical_energy_ = parameters.energy_release_rate / cut_per_unit_area;
+  }
+
+  template <int dim>
+  void
+  CriticalBondEnergyCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
+                                                ArrayView<const Tensor<1, dim>>  u,
+                                                ArrayView<const double>          scalars) const
+  {
+    model->compute_pair_energies(bonds, u, scalars, pair_energy);
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (bonds.state[n] == BondFamilies<dim>::intact && pair_energy[n] >= critical_energy_ &&
+            BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
+                                         u[bonds.neighbor[n]] - u[i])
+                .first > 0)
+          bonds.state[n] = BondFamilies<dim>::broken;
+  }
+
+  template <int dim>
+  bool
+  CriticalBondEnergyCriterion<dim>::needs_particle_scalars() const
+  {
+    return true;
+  }
+
+  template <int dim>
+  double
+  CriticalBondEnergyCriterion<dim>::critical_stretch() const
+  {
+    return 0;
+  }
+
+  template <int dim>
+  double
+  CriticalBondEnergyCriterion<dim>::critical_energy() const
+  {
+    return critical_energy_;
+  }
+
   template class FractureCriterion<2>;
   template class FractureCriterion<3>;
   template class CriticalStretchCriterion<2>;
   template class CriticalStretchCriterion<3>;
+  template class CriticalBondEnergyCriterion<2>;
+  template class CriticalBondEnergyCriterion<3>;
   template class PluginRegistry<FractureCriterion<2>>;
   template class PluginRegistry<FractureCriterion<3>>;
 
@@ -59,4 +131,10 @@ namespace PeriArlequin
     "critical stretch",
     "a bond breaks when its stretch exceeds Critical stretch, or the material model's "
     "critical stretch of G0")
+
+  PERIARLEQUIN_REGISTER_FRACTURE_CRITERION(
+    CriticalBondEnergyCriterion,
+    "critical bond energy",
+    "a stretched bond breaks when its share of the material model's strain energy reaches the "
+    "critical bond energy of G0")
 } // namespace PeriArlequin

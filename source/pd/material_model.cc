@@ -93,6 +93,65 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  PDMaterialModel<dim>::compute_pair_energies(const BondFamilies<dim> &,
+                                              ArrayView<const Tensor<1, dim>>,
+                                              ArrayView<const double>,
+                                              std::vector<double> &) const
+  {
+    AssertThrow(false,
+                ExcMessage("Peridynamics/Fracture criterion: this material model does not "
+                           "split its energy into bonds; choose a criterion that does not "
+                           "need bond energies (e.g. critical stretch)."));
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::compute_coefficients(const BondFamilies<dim>   &bonds,
+                                                    ArrayView<const double>    scalars,
+                                                    const std::vector<double> &state_weight) const
+  {
+    // With t = alpha x + beta e_d, alpha = c (k theta - beta S / 3) / q, beta = b / q:
+    // t = beta e + (alpha - beta theta / 3) x. So a bond's pair force is t_ij + t_ji =
+    // (beta_i + beta_j) e + (a_i + a_j) x with a = alpha - beta theta / 3; theta / 3 is kept
+    // for the deviatoric energy.
+    coefficients.resize(3 * bonds.n_total);
+    for (unsigned int j = 0; j < bonds.n_total; ++j)
+      {
+        const double weight = state_weight.empty() ? 1. : state_weight[j];
+        const double q      = bonds.weighted_volume[j];
+        const double beta   = b / q;
+        const double theta  = scalars[2 * j];
+        const double alpha  = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
+        coefficients[3 * j]     = weight * beta;
+        coefficients[3 * j + 1] = weight * (alpha - beta * theta / 3.);
+        coefficients[3 * j + 2] = theta / 3.;
+      }
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::compute_pair_energies(const BondFamilies<dim>          &bonds,
+                                                     ArrayView<const Tensor<1, dim>>  u,
+                                                     ArrayView<const double>           scalars,
+                                                     std::vector<double> &pair_energy) const
+  {
+    compute_coefficients(bonds, scalars, {});
+    pair_energy.assign(bonds.neighbor.size(), 0.);
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (bonds.state[n] != BondFamilies<dim>::broken)
+          {
+            const unsigned int j    = bonds.neighbor[n];
+            const auto        &bond = bonds.stencil[bonds.stencil_index[n]];
+            const double       e    = BondFamilies<dim>::extension(bond, u[j] - u[i]).first;
+            const double       t    = (coefficients[3 * i] + coefficients[3 * j]) * e +
+                               (coefficients[3 * i + 1] + coefficients[3 * j + 1]) * bond.length;
+            pair_energy[n] = 0.5 * t * e;
+          }
+  }
+
+  template <int dim>
+  void
   LinearPeridynamicSolid<dim>::compute_forces(const BondFamilies<dim>          &bonds,
                                               ArrayView<const Tensor<1, dim>>  u,
                                               const std::vector<double>         &scalars,
@@ -100,22 +159,8 @@ namespace PeriArlequin
                                               std::vector<Tensor<1, dim>>       &force_density,
                                               std::vector<double> &energy_density) const
   {
-    // Per particle (owned and ghost), with t = alpha x + beta e_d, alpha = c (k theta -
-    // beta S / 3) / q, beta = b / q: t = beta e + (alpha - beta theta / 3) x. So a bond's
-    // pair force is t_ij + t_ji = (beta_i + beta_j) e + (a_i + a_j) x with
-    // a = alpha - beta theta / 3; theta / 3 is kept for the deviatoric energy. The state
-    // weights scale each particle's force state, as they scale its energy.
-    coefficients.resize(3 * bonds.n_total);
-    for (unsigned int j = 0; j < bonds.n_total; ++j)
-      {
-        const double q     = bonds.weighted_volume[j];
-        const double beta  = b / q;
-        const double theta = scalars[2 * j];
-        const double alpha = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
-        coefficients[3 * j]     = state_weight[j] * beta;
-        coefficients[3 * j + 1] = state_weight[j] * (alpha - beta * theta / 3.);
-        coefficients[3 * j + 2] = theta / 3.;
-      }
+    // The state weights scale each particle's force state, as they scale its energy.
+    compute_coefficients(bonds, make_array_view(scalars), state_weight);
     std::fill(force_density.begin(), force_density.begin() + bonds.n_owned, Tensor<1, dim>());
     // Sum of omega e_d^2 V v per owned particle.
     std::fill(energy_density.begin(), energy_density.begin() + bonds.n_owned, 0.);

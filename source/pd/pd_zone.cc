@@ -110,7 +110,7 @@ namespace PeriArlequin
                            "that contain at least one lattice cell centre."));
     build_particle_structures();
     if (fracture)
-      fracture->initialize(parameters, *model);
+      fracture->initialize(parameters, *model, bonds);
     set_initial_state();
   }
 
@@ -454,6 +454,20 @@ namespace PeriArlequin
   PDZone<dim>::force_densities() const
   {
     return make_array_view(force_density);
+  }
+
+  template <int dim>
+  ArrayView<const double>
+  PDZone<dim>::particle_scalars() const
+  {
+    return make_array_view(model_scalars);
+  }
+
+  template <int dim>
+  const PDMaterialModel<dim> &
+  PDZone<dim>::get_material_model() const
+  {
+    return *model;
   }
 
   template <int dim>

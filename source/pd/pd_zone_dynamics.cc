@@ -17,11 +17,18 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::evaluate_model()
+  PDZone<dim>::update_model_scalars()
   {
     model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
     if (model->n_particle_scalars() > 0)
       ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::evaluate_model()
+  {
+    update_model_scalars();
     model->compute_forces(
       bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
   }
@@ -87,7 +94,12 @@ namespace PeriArlequin
   {
     update_ghost_displacements();
     if (fracture)
-      fracture->break_bonds(bonds, state.displacements());
+      {
+        // Bonds that break no longer count in the scalars: evaluate_model() recomputes them.
+        if (fracture->needs_particle_scalars())
+          update_model_scalars();
+        fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
+      }
     if (checks_overlap)
       check_damage_near_overlap(time);
     evaluate_model();

@@ -326,7 +326,8 @@ namespace PeriArlequinTests
    * cells per side; coupled: PD for x <= A c, |y| <= H c (c the cell size, H c >= 7 delta,
    * A c >= 6 delta), overlaps of 2 cells, FE beyond, weak coupling, force blending, damping constant 10 (the
    * default 30 over-damps these narrow overlaps at this time step). The
-   * crack diagnostics follow the tip at the centre.
+   * crack diagnostics follow the tip at the centre; bonds break as the fracture criterion
+   * @p criterion says.
    */
   inline std::string
   mixed_mode_case(const bool         coupled,
@@ -335,7 +336,8 @@ namespace PeriArlequinTests
                   const unsigned int cells,
                   const double       psi,
                   const double       critical_time,
-                  const double       end_time)
+                  const double       end_time,
+                  const std::string &criterion = "critical stretch")
   {
     const double       L = 0.03125, dx = 2 * L / n, c = 2 * L / cells, delta = m * dx;
     const double       kc   = std::sqrt(36e3 * 29e9 / (1 - 0.29 * 0.29));
@@ -348,7 +350,8 @@ namespace PeriArlequinTests
          << "  set Density = 2400\n  set Two-dimensional model = plane strain\nend\n"
          << "subsection Peridynamics\n  set Lattice spacing = " << dx
          << "\n  set Horizon factor = " << m
-         << "\n  set Fracture = true\n  set Critical energy release rate = 36e3\n"
+         << "\n  set Fracture = true\n  set Fracture criterion = " << criterion
+         << "\n  set Critical energy release rate = 36e3\n"
          << "  set Pre-cracks = " << -L << ", 0 : 0, 0\n";
     if (!coupled)
       text << "  set Region = " << -L << ", " << -L << " : " << L << ", " << L << "\nend\n";
@@ -373,7 +376,7 @@ namespace PeriArlequinTests
          << "    set Phase angle = " << psi << "\n  end\nend\n"
          << "subsection Time\n  set Time step = " << 1e-7 * 128 / n
          << "\n  set End time = " << end_time << "\nend\n"
-         << "subsection Postprocess\n  set List of postprocessors = cracks\n"
+         << "subsection Postprocess\n  set List of postprocessors = energies, cracks\n"
          << "  subsection cracks\n    set Initial tip = 0, 0\n  end\nend\n"
          << quiet_output() << "subsection Output\n  set Energy interval = 10\nend\n";
     return text.str();

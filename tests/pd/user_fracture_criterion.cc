@@ -31,10 +31,13 @@ namespace UserCriteria
     }
     void
     initialize(const PeriArlequin::Parameters::Peridynamics<dim> &,
-               const PeriArlequin::PDMaterialModel<dim> &) override
+               const PeriArlequin::PDMaterialModel<dim> &,
+               const BondFamilies<dim> &) override
     {}
     void
-    break_bonds(BondFamilies<dim> &bonds, ArrayView<const Tensor<1, dim>>  u) const override
+    break_bonds(BondFamilies<dim>               &bonds,
+                ArrayView<const Tensor<1, dim>>  u,
+                ArrayView<const double>) const override
     {
       for (unsigned int i = 0; i < bonds.n_owned; ++i)
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)

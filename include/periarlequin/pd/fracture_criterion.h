@@ -35,20 +35,35 @@ namespace PeriArlequin
     virtual void
     parse_parameters(ParameterHandler &prm);
 
-    /** Once the material model is initialised: the constants the criterion needs. */
+    /**
+     * Once the bond families and the material model are initialised: the constants the
+     * criterion needs.
+     */
     virtual void
     initialize(const Parameters::Peridynamics<dim> &parameters,
-               const PDMaterialModel<dim>          &model) = 0;
+               const PDMaterialModel<dim>          &model,
+               const BondFamilies<dim>             &bonds) = 0;
+
+    /**
+     * Does break_bonds() read the material model's particle scalars? Then the PD zone
+     * computes them for the current displacements first (one more pass over the bonds).
+     */
+    virtual bool
+    needs_particle_scalars() const;
 
     /**
      * Mark the intact bonds of the owned particles' families that fail under the
-     * displacements @p displacement (owned and ghost particles) as broken. A bond to a
-     * ghost is held by two ranks, which must decide alike: decide from the bond's reference
-     * vector and the displacement difference of its ends (BondFamilies::extension is
-     * bit-identical on both).
+     * displacements @p displacement (owned and ghost particles) as broken; @p scalars are
+     * the material model's particle scalars (owned and ghost) of these displacements if
+     * needs_particle_scalars(), otherwise of the last force evaluation. A bond to a ghost is held by two ranks, which
+     * must decide alike: decide from the bond's reference vector, the displacement
+     * difference of its ends (BondFamilies::extension is bit-identical on both) and
+     * symmetric functions of the scalars of its ends.
      */
     virtual void
-    break_bonds(BondFamilies<dim> &bonds, ArrayView<const Tensor<1, dim>>  displacement) const = 0;
+    break_bonds(BondFamilies<dim>               &bonds,
+                ArrayView<const Tensor<1, dim>>  displacement,
+                ArrayView<const double>          scalars) const = 0;
 
     /** The critical bond stretch [-] for the run's summary; 0 if the criterion has none. */
     virtual double
@@ -73,15 +88,54 @@ namespace PeriArlequin
   public:
     void
     initialize(const Parameters::Peridynamics<dim> &parameters,
-               const PDMaterialModel<dim>          &model) override;
+               const PDMaterialModel<dim>          &model,
+               const BondFamilies<dim>             &bonds) override;
     void
-    break_bonds(BondFamilies<dim>                 &bonds,
-                ArrayView<const Tensor<1, dim>>  displacement) const override;
+    break_bonds(BondFamilies<dim>               &bonds,
+                ArrayView<const Tensor<1, dim>>  displacement,
+                ArrayView<const double>          scalars) const override;
     double
     critical_stretch() const override;
 
   private:
     double stretch = 0;
+  };
+
+  /**
+   * A bond breaks when it is stretched (e > 0) and its energy, the material model's split of
+   * the strain energy into bonds (PDMaterialModel::compute_pair_energies()), reaches the
+   * critical bond energy w_c. w_c is set so that cutting the lattice along a lattice plane
+   * with every cut bond at w_c costs G0 per unit area (Peridynamics/Critical energy release
+   * rate): G0 = w_c sum over the stencil offsets xi with xi_0 > 0 of xi_0 V v, which is
+   * w_c 2 delta^3 / 3 in 2D and w_c pi delta^4 / 4 in 3D for a continuous family. Unlike a
+   * critical stretch derived from a pairwise (bond-based) energy, this takes the energy the
+   * state-based model actually stores in the bond, its dilatation part included.
+   */
+  template <int dim>
+  class CriticalBondEnergyCriterion : public FractureCriterion<dim>
+  {
+  public:
+    void
+    initialize(const Parameters::Peridynamics<dim> &parameters,
+               const PDMaterialModel<dim>          &model,
+               const BondFamilies<dim>             &bonds) override;
+    void
+    break_bonds(BondFamilies<dim>               &bonds,
+                ArrayView<const Tensor<1, dim>>  displacement,
+                ArrayView<const double>          scalars) const override;
+    bool
+    needs_particle_scalars() const override;
+    double
+    critical_stretch() const override;
+
+    /** The critical bond energy w_c [J/m^(2 dim)]. */
+    double
+    critical_energy() const;
+
+  private:
+    const PDMaterialModel<dim> *model           = nullptr;
+    double                      critical_energy_ = 0;
+    mutable std::vector<double> pair_energy;
   };
 } // namespace PeriArlequin
 

@@ -75,6 +75,19 @@ namespace PeriArlequin
     /** Critical bond stretch for the critical energy release rate G0 [J/m^2]. */
     virtual double
     critical_stretch(const double energy_release_rate, const double horizon) const = 0;
+
+    /**
+     * The energy of each bond of the owned particles' families [J/m^6]: a split of the
+     * strain energy into bonds, sum over bonds (each pair once) of pair_energy V v = the
+     * energy of the zone (no state weights), 0 on broken bonds. For the "critical bond
+     * energy" fracture criterion; the default throws (a model without such a split cannot be
+     * used with it). Both ranks that hold a bond to a ghost must get the same value.
+     */
+    virtual void
+    compute_pair_energies(const BondFamilies<dim>          &bonds,
+                          ArrayView<const Tensor<1, dim>>  displacement,
+                          ArrayView<const double>           scalars,
+                          std::vector<double>               &pair_energy) const;
   };
 
   /** The open registry of PD material models, by name. */
@@ -126,8 +139,27 @@ namespace PeriArlequin
                    std::vector<double>               &energy_density) const override;
     double
     critical_stretch(const double energy_release_rate, const double horizon) const override;
+    /**
+     * The model's energy is quadratic in the bond extensions e with t = dW/de / (V v), so
+     * half the pair force times the extension, (t_ij + t_ji) e / 2, splits it exactly.
+     */
+    void
+    compute_pair_energies(const BondFamilies<dim>          &bonds,
+                          ArrayView<const Tensor<1, dim>>  displacement,
+                          ArrayView<const double>           scalars,
+                          std::vector<double>               &pair_energy) const override;
 
   private:
+    /**
+     * Per particle (owned and ghost) the coefficients of its force state, scaled by its
+     * state weight (an empty @p state_weight: 1): coefficients[3 j] = beta,
+     * coefficients[3 j + 1] = alpha - beta theta / 3, coefficients[3 j + 2] = theta / 3.
+     */
+    void
+    compute_coefficients(const BondFamilies<dim>    &bonds,
+                         ArrayView<const double>     scalars,
+                         const std::vector<double>  &state_weight) const;
+
     double                      c = 0, k = 0, b = 0;
     double                      youngs_modulus = 0, bulk_modulus = 0;
     bool                        plane_strain   = false;

@@ -192,6 +192,14 @@ namespace PeriArlequin
     /** Strain energy density of the owned particles (blended if energy blending) [J/m^dim]. */
     ArrayView<const double>
     energy_densities() const;
+    /**
+     * The material model's particle scalars (PDMaterialModel::n_particle_scalars() per
+     * particle, owned then ghosts) at the last force evaluation.
+     */
+    ArrayView<const double>
+    particle_scalars() const;
+    const PDMaterialModel<dim> &
+    get_material_model() const;
     /** Blending weight alpha of owned and ghost particles. */
     ArrayView<const double>
     blending_weights() const;
@@ -284,7 +292,10 @@ namespace PeriArlequin
     load_density(const unsigned int i, const double time) const;
     void
     set_initial_state();
-    /** Model scalars (owned, then ghosts) and forces of the current displacements. */
+    /** Model scalars (owned, then ghosts) of the current displacements. */
+    void
+    update_model_scalars();
+    /** Model scalars and forces of the current displacements. */
     void
     evaluate_model();
 
