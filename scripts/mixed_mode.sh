@@ -9,13 +9,14 @@
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
 #   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
-# coupled, m6_coupled, m6_coupled_angles, stress. Takes about two and a half hours for all on one core.
+# coupled, m6_coupled, m6_coupled_angles, bond_energy, stress. Takes about three hours for all
+# on one core.
 set -euo pipefail
 usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles stress}
+groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles bond_energy stress}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
@@ -23,9 +24,9 @@ cd "$work"
 source "$here/study_lib.sh"
 
 # case_file <name> <plane: strain|stress> <psi [deg]> <T_c [s]> <lattice sites per side>
-#           <horizon factor> <FE cells per side> <coupled: 0|1>
+#           <horizon factor> <FE cells per side> <coupled: 0|1> [<fracture criterion>]
 case_file() {
-  local name=$1 plane=$2 psi=$3 tc=$4 n=$5 m=$6 cells=$7 coupled=$8
+  local name=$1 plane=$2 psi=$3 tc=$4 n=$5 m=$6 cells=$7 coupled=$8 criterion=${9:-critical stretch}
   local L=0.03125 dx c kc kdot end
   dx=$(calc "2 * $L / $n")
   c=$(calc "2 * $L / $cells")
@@ -50,6 +51,7 @@ subsection Peridynamics
   set Lattice spacing              = $dx
   set Horizon factor               = $m
   set Fracture                     = true
+  set Fracture criterion           = $criterion
   set Critical energy release rate = 36e3
   set Pre-cracks                   = -$L, 0 : 0, 0
 EOF
@@ -146,9 +148,27 @@ for group in $groups; do
         run "pd_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 0
         run "coupled8_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 1
       done ;;
+    bond_energy)
+      # The "critical bond energy" criterion: mode I at m = 3, 6, 8 and three phase angles
+      # at m = 6 (crack_energy_table.sh compares the mode-I runs with the critical stretch).
+      for m in 3 6 8; do
+        cells=$((m == 3 ? 32 : (m == 6 ? 16 : 8)))
+        run "pd_strain_0_n128_m${m}_energy" strain 0 $tc 128 $m $cells 0 "critical bond energy"
+      done
+      for psi in 26.565 45 63.435; do
+        run "pd_strain_${psi}_m6_energy" strain "$psi" $tc 128 6 16 0 "critical bond energy"
+      done ;;
     stress)
       for psi in 0 45; do run "pd_stress_$psi" stress "$psi" $tc 128 3 32 0; done ;;
     *) echo "unknown group $group"; exit 1 ;;
   esac
 done
-"$here/mixed_mode_table.sh" $(ls -d pd_* coupled* 2> /dev/null | grep -v '\.' | sort -u)
+# Every run is a directory (names may hold a decimal point).
+runs=$(ls -d pd_*/ coupled*/ 2> /dev/null | sed 's|/$||' | grep -v '_energy$' | sort -u)
+"$here/mixed_mode_table.sh" $runs
+energy_runs=$(ls -d pd_*_energy/ 2> /dev/null | sed 's|/$||' | sort -u)
+if [ -n "$energy_runs" ]; then
+  "$here/mixed_mode_table.sh" $energy_runs
+  "$here/crack_energy_table.sh" pd_strain_0 pd_strain_0_n128_m6 pd_strain_0_n128_m8 \
+    $(echo "$energy_runs" | grep '^pd_strain_0_') 2> /dev/null || true
+fi
