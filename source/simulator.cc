@@ -41,6 +41,16 @@ namespace PeriArlequin
                         "name.");
     PostprocessorRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Model",
+                      "none",
+                      Patterns::Selection("none|" + ContactRegistry<dim>::names()),
+                      "Contact of the FE boundary with an obstacle, by registered name (none: "
+                      "no contact):" +
+                        ContactRegistry<dim>::documentation() +
+                        "\nA model's own parameters are in the subsection of its name.");
+    ContactRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -70,6 +80,11 @@ namespace PeriArlequin
             FractureCriterionRegistry<dim>::create(pd_parameters.fracture_criterion, prm);
         prm.leave_subsection();
       }
+    prm.enter_subsection("Contact");
+    contact_model = prm.get("Model");
+    if (contact_model != "none")
+      contact = ContactRegistry<dim>::create(contact_model, prm);
+    prm.leave_subsection();
     prm.enter_subsection("Postprocess");
     for (const auto &name : Utilities::split_string_list(prm.get("List of postprocessors")))
       postprocessors.push_back(PostprocessorRegistry<dim>::create(name, prm));
@@ -171,7 +186,17 @@ namespace PeriArlequin
         stable_time_step =
           fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
         fe_zone->initialize_state(problem_data, dt);
+        if (contact)
+          {
+            contact->initialize(*fe_zone);
+            fe_zone->set_contact(contact.get());
+          }
       }
+    else if (contact)
+      throw_invalid_parameter("Contact/Model",
+                              contact_model,
+                              "none: contact acts on FE boundary nodes and this case has no "
+                              "FE cells");
     if (pd_zone)
       {
         pd_zone->setup(problem_data, dt);
@@ -445,6 +470,13 @@ namespace PeriArlequin
   Simulator<dim>::get_pd_zone() const
   {
     return pd_zone.get();
+  }
+
+  template <int dim>
+  const Contact<dim> *
+  Simulator<dim>::get_contact() const
+  {
+    return contact.get();
   }
 
   template <int dim>

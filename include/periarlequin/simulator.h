@@ -83,6 +83,9 @@ namespace PeriArlequin
     get_pd_zone();
     const PDZone<dim> *
     get_pd_zone() const;
+    /** The contact model (Contact/Model), or nullptr. */
+    const Contact<dim> *
+    get_contact() const;
     /** Where the pure-PD energies are measured (Output/Monitor region). */
     const Region<dim> &
     get_monitor_region() const;
@@ -158,6 +161,8 @@ namespace PeriArlequin
     std::unique_ptr<PDOutput<dim>>            pd_output;
     std::unique_ptr<PDMaterialModel<dim>>     pd_material;
     std::unique_ptr<FractureCriterion<dim>>   fracture_criterion;
+    std::string                               contact_model;
+    std::unique_ptr<Contact<dim>>             contact;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;

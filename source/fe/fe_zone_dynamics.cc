@@ -128,6 +128,9 @@ namespace PeriArlequin
         (applied_force.local_element(i) - internal_force.local_element(i) +
          interface_force.local_element(i)) /
         mass.local_element(i);
+    if (contact)
+      contact->enforce(
+        time_step, mass, state.displacement, state.velocity, state.acceleration, applied_force);
     // Prescribed DoFs keep their prescribed acceleration; their applied force takes the
     // support reaction M a + F_int - F_interface.
     for (unsigned int k = 0; k < prescribed.size(); ++k)
@@ -222,6 +225,14 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  FEZone<dim>::set_contact(Contact<dim> *contact_model)
+  {
+    contact     = contact_model;
+    tracks_work = tracks_work || contact != nullptr;
+  }
+
+  template <int dim>
+  void
   FEZone<dim>::set_additional_load(const std::function<void(double, VectorType &)> &add_load)
   {
     add_additional_load = add_load;
@@ -246,6 +257,7 @@ namespace PeriArlequin
   template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);           \
   template void FEZone<dim>::set_interface_force(                                            \
     const std::function<void(FEZone<dim>::VectorType &)> &);                                 \
+  template void FEZone<dim>::set_contact(Contact<dim> *);                                    \
   template void FEZone<dim>::set_additional_load(                                            \
     const std::function<void(double, FEZone<dim>::VectorType &)> &);
 

@@ -86,6 +86,18 @@ namespace PeriArlequin
     history.add_value("max_stretch_slave_layer", largest[2]);
   }
 
+  template <int dim>
+  void
+  ContactForces<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const Contact<dim> *contact = simulator.get_contact();
+    const auto          force   = contact ? contact->total_force() : Tensor<1, dim>();
+    const char         *axes[3] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      history.add_value(std::string("contact_force_") + axes[d], force[d]);
+    history.add_value("contact_nodes", contact ? contact->n_touching_nodes() : 0);
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
   template class EnergyPostprocessor<2>;
@@ -96,6 +108,8 @@ namespace PeriArlequin
   template class ConstraintResiduals<3>;
   template class BondStretches<2>;
   template class BondStretches<3>;
+  template class ContactForces<2>;
+  template class ContactForces<3>;
   template class PluginRegistry<Postprocessor<2>>;
   template class PluginRegistry<Postprocessor<3>>;
 
@@ -111,6 +125,9 @@ namespace PeriArlequin
     BondStretches,
     "bond stretches",
     "largest bond stretch in the pure PD zone, the overlap and the slave layer")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(ContactForces,
+                                      "contact forces",
+                                      "total contact force on the body and nodes in contact")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ConstraintResiduals,
     "constraint residuals",

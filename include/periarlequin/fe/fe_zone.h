@@ -13,6 +13,7 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
+#include <periarlequin/fe/contact.h>
 #include <periarlequin/time/integrated_zone.h>
 
 #include <functional>
@@ -127,6 +128,14 @@ namespace PeriArlequin
     void
     set_additional_load(const std::function<void(double, VectorType &)> &add_load);
 
+    /**
+     * Contact forces from @p contact (nullptr: none) at every force evaluation, after the
+     * trial accelerations; they count as applied force in the work. @p contact must outlive
+     * the zone.
+     */
+    void
+    set_contact(Contact<dim> *contact);
+
     /** The locally owned DoFs (local indices), their support points and components. */
     void
     support_points(std::vector<unsigned int> &local_dofs,
@@ -216,6 +225,7 @@ namespace PeriArlequin
     std::vector<double>                              nodal_force_weights;
     std::function<void(VectorType &)>                add_interface_force;
     std::function<void(double, VectorType &)>        add_additional_load;
+    Contact<dim>                                    *contact = nullptr;
     /** Whether any load or support does work (otherwise the work is not accounted). */
     bool                                             tracks_work = false;
     double                                           work        = 0;

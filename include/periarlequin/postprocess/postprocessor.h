@@ -95,6 +95,18 @@ namespace PeriArlequin
     void
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
   };
+
+  /**
+   * Contact (Contact/Model): the total contact force on the body [N], per component, and the
+   * number of nodes in contact; zeros without contact.
+   */
+  template <int dim>
+  class ContactForces : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
 } // namespace PeriArlequin
 
 /**
