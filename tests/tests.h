@@ -51,6 +51,39 @@ namespace PeriArlequinTests
            "end\n";
   }
 
+  /**
+   * A pure PD block of 1 mm lattice spacing (2D: 20 mm square, 3D: 10 mm cube) with a
+   * pre-crack from the left side to the middle, displaced at rest by a smooth random-looking
+   * field of strain about 1e-2; @p model is the two-dimensional model (2D; empty: default).
+   * Used to check identities of the PD forces and energies on broken bonds, surfaces and the
+   * deviatoric-moment term they activate.
+   */
+  template <int dim>
+  std::string
+  cracked_random_block(const std::string &model = "")
+  {
+    std::ostringstream prm;
+    prm << "set Dimension = " << dim << "\n"
+        << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
+        << "\n  set Upper corner = " << (dim == 2 ? "0.02, 0.02" : "0.01, 0.01, 0.01")
+        << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "2, 2, 2") << "\nend\n"
+        << (dim == 2 && !model.empty() ?
+              "subsection Material\n  set Two-dimensional model = " + model + "\nend\n" :
+              "")
+        << "subsection Peridynamics\n  set Region = "
+        << (dim == 2 ? "0, 0 : 0.02, 0.02" : "0, 0, 0 : 0.01, 0.01, 0.01")
+        << "\n  set Lattice spacing = 1e-3\n"
+        << "  set Pre-cracks = "
+        << (dim == 2 ? "0, 0.0101 : 0.01, 0.0101" : "0, 0.0051, 0 : 0.005, 0, 0 : 0, 0, 0.01")
+        << "\nend\n"
+        << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
+        << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
+        << "    set Function expression = 1e-5*sin(7e3*x*y+3e2*y+1); 1e-5*cos(5e3*x+4e5*x*y)"
+        << (dim == 3 ? "; 1e-5*sin(3e3*z+2e5*x*y+9e2*x)" : "") << "\n  end\nend\nend\n"
+        << quiet_output();
+    return prm.str();
+  }
+
   inline bool
   is_root()
   {

@@ -13,7 +13,7 @@
 //    The bond must break at the first step with w >= w_c, exactly, and stay broken; pushed
 //    instead (u < 0, the same energy) it must not break.
 
-#include "../tests.h"
+#include "single_bond.h"
 
 using namespace PeriArlequinTests;
 
@@ -21,25 +21,7 @@ template <int dim>
 void
 energy_split(const std::string &model)
 {
-  const double dx = 1e-3;
-  std::ostringstream prm;
-  prm << "set Dimension = " << dim << "\n"
-      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
-      << "\n  set Upper corner = " << (dim == 2 ? "0.02, 0.02" : "0.01, 0.01, 0.01")
-      << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "2, 2, 2") << "\nend\n"
-      << (dim == 2 ? "subsection Material\n  set Two-dimensional model = " + model + "\nend\n" : "")
-      << "subsection Peridynamics\n  set Region = "
-      << (dim == 2 ? "0, 0 : 0.02, 0.02" : "0, 0, 0 : 0.01, 0.01, 0.01")
-      << "\n  set Lattice spacing = " << dx << "\n"
-      << "  set Pre-cracks = "
-      << (dim == 2 ? "0, 0.0101 : 0.01, 0.0101" : "0, 0.0051, 0 : 0.005, 0, 0 : 0, 0, 0.01")
-      << "\nend\n"
-      << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
-      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
-      << "    set Function expression = 1e-5*sin(7e3*x*y+3e2*y+1); 1e-5*cos(5e3*x+4e5*x*y)"
-      << (dim == 3 ? "; 1e-5*sin(3e3*z+2e5*x*y+9e2*x)" : "") << "\n  end\nend\nend\n"
-      << quiet_output();
-  auto simulator = make_simulator<dim>(prm.str());
+  auto simulator = make_simulator<dim>(cracked_random_block<dim>(model));
   simulator->setup();
   auto &pd = *simulator->get_pd_zone();
   pd.compute_internal_forces();
@@ -81,6 +63,7 @@ template <int dim>
 void
 single_bond(const double sign)
 {
+  // The case of single_bond.h: dx = 1 mm, E = 69 GPa, nu = 0.3, m = 3.015.
   const double dx = 1e-3, G0 = 100., E = 69e9, nu = 0.3, delta = 3.015 * dx;
   const double K = E / (3 * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   const double bond_volume = std::pow(dx, dim);
@@ -88,56 +71,21 @@ single_bond(const double sign)
   const double w_c         = G0 / cut_per_unit_area<dim>(dx, delta);
   const double e_c         = std::sqrt(w_c * dx * dx * bond_volume / stiffness);
   const double U = 2 * e_c, T = 1e-4;
-  std::ostringstream prm;
-  prm << std::setprecision(17) << "set Dimension = " << dim << "\n"
-      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
-      << "\n  set Upper corner = " << (dim == 2 ? "0.01, 0.01" : "0.01, 0.01, 0.01")
-      << "\n  set Subdivisions = " << (dim == 2 ? "2, 2" : "2, 2, 2") << "\nend\n"
-      << "subsection Material\n  set Young's modulus = " << E << "\n  set Poisson's ratio = "
-      << nu << "\n  set Two-dimensional model = plane strain\nend\n"
-      << "subsection Peridynamics\n  set Region = "
-      << (dim == 2 ? "0, 0 : 0.002, 0.001" : "0, 0, 0 : 0.002, 0.001, 0.001")
-      << "\n  set Lattice spacing = " << dx << "\n  set Fracture = true\n"
-      << "  set Fracture criterion = critical bond energy\n"
-      << "  set Critical energy release rate = " << G0 << "\n"
-      << "  subsection Prescribed region 0\n    set Region = "
-      << (dim == 2 ? "0, 0 : 0.001, 0.001" : "0, 0, 0 : 0.001, 0.001, 0.001") << "\n  end\n"
-      << "  subsection Prescribed region 1\n    set Region = "
-      << (dim == 2 ? "0.001, 0 : 0.002, 0.001" : "0.001, 0, 0 : 0.002, 0.001, 0.001")
-      << "\n    subsection Function\n      set Function constants = U=" << sign * U
-      << ", T=" << T << "\n      set Function expression = U*sin(pi*t/T); 0"
-      << (dim == 3 ? "; 0" : "") << "\n    end\n  end\nend\n"
-      << "subsection Time\n  set Time step = 2e-8\n  set End time = " << T << "\nend\n"
-      << quiet_output();
-  auto simulator = make_simulator<dim>(prm.str());
+  auto simulator = make_simulator<dim>(single_bond_case<dim>(
+    "plane strain", "  set Fracture criterion = critical bond energy\n", G0, sign * U, T));
   simulator->setup();
-  auto &pd = *simulator->get_pd_zone();
-  AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,
-              ExcMessage("expected two particles and one bond (stored at both ends)"));
-
-  int  first_broken_step = -1, expected_step = -1;
-  bool broken_after_release = true;
-  for (int step = 1; simulator->get_time() < T * (1 - 1e-12); ++step)
-    {
-      simulator->advance();
-      const double e = sign * U * std::sin(numbers::PI * simulator->get_time() / T);
-      if (expected_step < 0 && e > 0 && stiffness * e * e / (dx * dx * bond_volume) >= w_c)
-        expected_step = step;
-      const auto broken = pd.n_global_broken_bonds();
-      if (first_broken_step < 0 && broken == 2)
-        first_broken_step = step;
-      if (first_broken_step > 0 && broken != 2)
-        broken_after_release = false;
-    }
+  const auto run = run_single_bond(*simulator, sign * U, T, [&](const double e) {
+    return e > 0 && stiffness * e * e / (dx * dx * bond_volume) >= w_c;
+  });
   const std::string title = std::to_string(dim) + "D single bond " + (sign > 0 ? "pulled" : "pushed");
   if (sign > 0)
     {
-      report(title + ": expected breaking step", expected_step);
-      check(title + ": breaking step - first step with w >= w_c", first_broken_step - expected_step, 0, 0);
-      check(title + ": bond stays broken after the stretch falls (1 = yes)", broken_after_release, 1, 0);
+      report(title + ": expected breaking step", run.expected_step);
+      check(title + ": breaking step - first step with w >= w_c", run.breaking_step - run.expected_step, 0, 0);
+      check(title + ": bond stays broken after the stretch falls (1 = yes)", run.stays_broken, 1, 0);
     }
   else
-    check(title + ": breaking step (-1: never)", first_broken_step, -1, 0);
+    check(title + ": breaking step (-1: never)", run.breaking_step, -1, 0);
 }
 
 int

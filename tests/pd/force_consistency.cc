@@ -16,23 +16,7 @@ void
 check_consistency()
 {
   const double dx = 1e-3;
-  std::ostringstream prm;
-  prm << "set Dimension = " << dim << "\n"
-      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
-      << "\n  set Upper corner = " << (dim == 2 ? "0.02, 0.02" : "0.01, 0.01, 0.01")
-      << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "2, 2, 2") << "\nend\n"
-      << "subsection Peridynamics\n  set Region = "
-      << (dim == 2 ? "0, 0 : 0.02, 0.02" : "0, 0, 0 : 0.01, 0.01, 0.01")
-      << "\n  set Lattice spacing = " << dx << "\n"
-      << "  set Pre-cracks = "
-      << (dim == 2 ? "0, 0.0101 : 0.01, 0.0101" : "0, 0.0051, 0 : 0.005, 0, 0 : 0, 0, 0.01")
-      << "\nend\n"
-      << "subsection Time\n  set Time step = 1e-9\n  set Stability estimate iterations = 5\nend\n"
-      << "subsection Initial conditions\nsubsection function\n  subsection Displacement\n"
-      << "    set Function expression = 1e-5*sin(7e3*x*y+3e2*y+1); 1e-5*cos(5e3*x+4e5*x*y)"
-      << (dim == 3 ? "; 1e-5*sin(3e3*z+2e5*x*y+9e2*x)" : "") << "\n  end\nend\nend\n"
-      << quiet_output();
-  auto simulator = make_simulator<dim>(prm.str());
+  auto simulator = make_simulator<dim>(cracked_random_block<dim>());
   simulator->setup();
   auto        &pd     = *simulator->get_pd_zone();
   const double volume = pd.particle_volume();

@@ -14,7 +14,7 @@
 //    breaking leaves q unchanged, so a given crack and a grown one act alike (exact to
 //    round-off, 1e-12).
 
-#include "../tests.h"
+#include "single_bond.h"
 
 #include "plate.h"
 
@@ -30,52 +30,16 @@ single_bond(const std::string &model = "plane stress")
     model == "plane stress" ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
                               std::sqrt(5 * numbers::PI * G0 / (12 * E * delta));
   const double U = 2 * s_c * dx, T = 1e-4;
-  std::ostringstream prm;
-  prm << "set Dimension = " << dim << "\n"
-      << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
-      << "\n  set Upper corner = " << (dim == 2 ? "0.01, 0.01" : "0.01, 0.01, 0.01")
-      << "\n  set Subdivisions = " << (dim == 2 ? "2, 2" : "2, 2, 2") << "\nend\n"
-      << "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
-      << "  set Two-dimensional model = " << model << "\nend\n"
-      << "subsection Peridynamics\n  set Region = "
-      << (dim == 2 ? "0, 0 : 0.002, 0.001" : "0, 0, 0 : 0.002, 0.001, 0.001")
-      << "\n  set Lattice spacing = " << dx << "\n  set Fracture = true\n"
-      << "  set Critical energy release rate = " << G0 << "\n"
-      << "  subsection Prescribed region 0\n    set Region = "
-      << (dim == 2 ? "0, 0 : 0.001, 0.001" : "0, 0, 0 : 0.001, 0.001, 0.001") << "\n  end\n"
-      << "  subsection Prescribed region 1\n    set Region = "
-      << (dim == 2 ? "0.001, 0 : 0.002, 0.001" : "0.001, 0, 0 : 0.002, 0.001, 0.001")
-      << "\n    subsection Function\n      set Function constants = U=" << std::setprecision(17)
-      << U << ", T=" << T << "\n      set Function expression = U*sin(pi*t/T); 0"
-      << (dim == 3 ? "; 0" : "") << "\n    end\n  end\nend\n"
-      << "subsection Time\n  set Time step = 2e-8\n  set End time = " << T << "\nend\n"
-      << quiet_output();
-  auto simulator = make_simulator<dim>(prm.str());
+  auto simulator = make_simulator<dim>(single_bond_case<dim>(model, "", G0, U, T));
   simulator->setup();
   auto &pd = *simulator->get_pd_zone();
   const std::string title = std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") + "single bond";
   check(title + ": critical stretch / formula", pd.get_critical_stretch() / s_c, 1., 1e-12);
-  AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,
-              ExcMessage("expected two particles and one bond (stored at both ends)"));
-
-  int  first_broken_step = -1, expected_step = -1;
-  bool broken_after_release = true;
-  for (int step = 1; simulator->get_time() < T * (1 - 1e-12); ++step)
-    {
-      simulator->advance();
-      const double stretch = U * std::sin(numbers::PI * simulator->get_time() / T) / dx;
-      if (expected_step < 0 && stretch > s_c)
-        expected_step = step;
-      const auto broken = pd.n_global_broken_bonds();
-      if (first_broken_step < 0 && broken == 2)
-        first_broken_step = step;
-      if (first_broken_step > 0 && broken != 2)
-        broken_after_release = false;
-    }
-  report(title + ": expected breaking step", expected_step);
-  report(title + ": breaking step", first_broken_step);
-  check(title + ": breaking step - first step with stretch > s_c", first_broken_step - expected_step, 0, 0);
-  check(title + ": bond stays broken after the stretch falls (1 = yes)", broken_after_release, 1, 0);
+  const auto run = run_single_bond(*simulator, U, T, [&](const double e) { return e / dx > s_c; });
+  report(title + ": expected breaking step", run.expected_step);
+  report(title + ": breaking step", run.breaking_step);
+  check(title + ": breaking step - first step with stretch > s_c", run.breaking_step - run.expected_step, 0, 0);
+  check(title + ": bond stays broken after the stretch falls (1 = yes)", run.stays_broken, 1, 0);
 }
 
 /** sum over the lattice offsets of |xi|^2 dx^2 v(|xi|) with eq. 22's partial volume, 2D. */
