@@ -228,14 +228,24 @@ namespace PeriArlequinTests
   /**
    * Run the case given by @p parameters on all ranks and, on rank 0 alone (MPI_COMM_SELF),
    * once more; return the largest difference between the two energy histories, per column
-   * relative to the column's largest magnitude (the same on every rank).
+   * relative to the column's largest magnitude (the same on every rank). If @p active_column
+   * is given, that column must end non-zero (e.g. broken_bonds: the case did break bonds).
    */
   template <int dim>
   double
-  parallel_vs_serial_history_difference(const std::string &parameters, const std::string &title)
+  parallel_vs_serial_history_difference(const std::string &parameters,
+                                        const std::string &title,
+                                        const std::string &active_column = "")
   {
     auto parallel = make_simulator<dim>(parameters, MPI_COMM_WORLD);
     parallel->run();
+    if (!active_column.empty())
+      {
+        const double last = parallel->get_energy_history().column(active_column).back();
+        report(title + " " + active_column + " at the end", last);
+        AssertThrow(last != 0,
+                    ExcMessage(title + ": " + active_column + " stayed 0, the case is vacuous"));
+      }
     const auto &rows  = parallel->get_energy_history().rows();
     double      worst = 0;
     if (is_root())

@@ -2,7 +2,9 @@
 // ranks; rank 0 also runs each case alone (MPI_COMM_SELF). Compared: every column of the
 // energy history at every step (kinetic, strain, work, total, broken-bond count).
 //  - the pre-cracked plate of the fracture test, coarser (50 x 50 particles, 300 steps):
-//    the crack runs across the partition boundary;
+//    the crack runs across the partition boundary; with the critical stretch and with the
+//    critical bond energy (whose decision on a bond to a ghost uses both ends' particle
+//    scalars); both must break bonds;
 //  - a 3D block with a smooth initial velocity and a body force (ghosts in 3D).
 //
 // Tolerance 1e-10 relative to each column's largest magnitude (sums in a different order
@@ -21,7 +23,16 @@ main(int argc, char **argv)
     require_two_ranks();
     check_below("2D pre-cracked plate, 2 ranks vs 1 rank, max relative difference",
                 parallel_vs_serial_history_difference<2>(plate_parameters(8e-4, true, 300),
-                                                         "2D plate"),
+                                                         "2D plate",
+                                                         "broken_bonds"),
+                1e-10);
+    check_below("2D pre-cracked plate, bond-energy criterion, 2 ranks vs 1 rank, max relative "
+                "difference",
+                parallel_vs_serial_history_difference<2>(
+                  plate_parameters(8e-4, true, 300) +
+                    "subsection Peridynamics\n  set Fracture criterion = critical bond energy\nend\n",
+                  "2D plate, bond energy",
+                  "broken_bonds"),
                 1e-10);
     const std::string block = "set Dimension = 3\n"
                               "subsection Geometry\n"
