@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/contact.h>
@@ -70,33 +69,39 @@ namespace PeriArlequin
                                 "ids of the box's faces, 0 to " + std::to_string(n_faces - 1) +
                                   " (x faces 0/1, y 2/3, z 4/5), or empty for all");
 
-    std::set<types::boundary_id> ids(boundary_ids.begin(), boundary_ids.end());
-    const IndexSet on_boundary =
-      DoFTools::extract_boundary_dofs(zone.get_dof_handler(), ComponentMask(), ids);
+    // The owned boundary nodes: a vertex's dim DoFs, one per component (FE_Q(1)^dim), found
+    // from the vertex itself so that the grouping is exact.
     const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
-
-    // Group the owned boundary DoFs by support point (one node, dim components).
-    std::vector<unsigned int> local_dofs, components;
-    std::vector<Point<dim>>   points;
-    zone.support_points(local_dofs, points, components);
-    double extent = 0;
-    for (const auto &p : points)
-      extent = std::max(extent, p.norm());
-    const double tolerance = 1e-10 * std::max(extent, 1e-3);
-    std::map<std::array<long long, dim>, Node> grouped;
-    for (unsigned int k = 0; k < local_dofs.size(); ++k)
+    std::map<types::global_dof_index, Node> found;
+    for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
       {
-        if (!on_boundary.is_element(owned.nth_index_in_set(local_dofs[k])))
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0 ||
+            !cell->at_boundary())
           continue;
-        std::array<long long, dim> key;
-        for (unsigned int d = 0; d < dim; ++d)
-          key[d] = std::llround(points[k][d] / tolerance);
-        auto &node                  = grouped[key];
-        node.position               = points[k];
-        node.dofs[components[k]]    = local_dofs[k];
+        AssertThrow(cell->get_fe().degree == 1,
+                    ExcMessage("Invalid input: 'Contact/Model' = rigid wall needs 'Finite "
+                               "elements/Polynomial degree' = 1 (lumped vertex masses)."));
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->at_boundary(f) ||
+                (!boundary_ids.empty() && boundary_ids.count(cell->face(f)->boundary_id()) == 0))
+              continue;
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                const auto first = cell->face(f)->vertex_dof_index(v, 0, cell->active_fe_index());
+                if (!owned.is_element(first))
+                  continue;
+                Node node;
+                node.position = cell->face(f)->vertex(v);
+                for (unsigned int d = 0; d < dim; ++d)
+                  node.dofs[d] = owned.index_within_set(
+                    cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index()));
+                found[first] = node;
+              }
+          }
       }
     nodes.clear();
-    for (const auto &entry : grouped)
+    for (const auto &entry : found)
       nodes.push_back(entry.second);
 
     AssertThrow(Utilities::MPI::sum(nodes.size(), communicator) > 0,
@@ -120,7 +125,7 @@ namespace PeriArlequin
           }
       }
     const auto least = Utilities::MPI::min_max_avg(gap, communicator).min;
-    if (least < -tolerance)
+    if (least < -1e-12 * std::max(std::abs(wall_point * normal), 1e-3))
       {
         std::ostringstream where;
         where << "a wall through the point given, with every boundary node at t = 0 on the "
