@@ -146,8 +146,8 @@ namespace PeriArlequin
                                  typename Contact<dim>::VectorType       &a,
                                  typename Contact<dim>::VectorType       &applied_force)
   {
-    Tensor<1, dim> local_force;
-    unsigned int   touching = 0;
+    local_force    = Tensor<1, dim>();
+    local_touching = 0;
     for (const auto &node : nodes)
       {
         double gap = (node.position - wall_point) * normal;
@@ -159,7 +159,7 @@ namespace PeriArlequin
           }
         if (gap >= 0)
           continue;
-        ++touching;
+        ++local_touching;
         const double push = -gap / (dt * dt);
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -169,23 +169,20 @@ namespace PeriArlequin
             local_force[d] += mass.local_element(i) * push * normal[d];
           }
       }
-    for (unsigned int d = 0; d < dim; ++d)
-      force[d] = Utilities::MPI::sum(local_force[d], communicator);
-    n_touching = Utilities::MPI::sum(touching, communicator);
   }
 
   template <int dim>
   Tensor<1, dim>
   RigidWallContact<dim>::total_force() const
   {
-    return force;
+    return Utilities::MPI::sum(local_force, communicator);
   }
 
   template <int dim>
   unsigned int
   RigidWallContact<dim>::n_touching_nodes() const
   {
-    return n_touching;
+    return Utilities::MPI::sum(local_touching, communicator);
   }
 
   template class Contact<2>;

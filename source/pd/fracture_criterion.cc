@@ -31,11 +31,12 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
+  bool
   CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
                                              ArrayView<const Tensor<1, dim>>  u,
                                              ArrayView<const double>) const
   {
+    bool broke = false;
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
@@ -45,8 +46,12 @@ namespace PeriArlequin
           const double e =
             BondFamilies<dim>::extension(bond, u[bonds.neighbor[n]] - u[i]).first;
           if (e > stretch * bond.length)
-            bonds.state[n] = BondFamilies<dim>::broken;
+            {
+              bonds.state[n] = BondFamilies<dim>::broken;
+              broke          = true;
+            }
         }
+    return broke;
   }
 
   template <int dim>
@@ -81,19 +86,24 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
+  bool
   CriticalBondEnergyCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
                                                 ArrayView<const Tensor<1, dim>>  u,
                                                 ArrayView<const double>          scalars) const
   {
     model->compute_pair_energies(bonds, u, scalars, pair_energy);
+    bool broke = false;
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         if (bonds.state[n] == BondFamilies<dim>::intact && pair_energy[n] >= critical_energy_ &&
             BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
                                          u[bonds.neighbor[n]] - u[i])
                 .first > 0)
-          bonds.state[n] = BondFamilies<dim>::broken;
+          {
+            bonds.state[n] = BondFamilies<dim>::broken;
+            broke          = true;
+          }
+    return broke;
   }
 
   template <int dim>

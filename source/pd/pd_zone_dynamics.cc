@@ -26,9 +26,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::evaluate_model()
+  PDZone<dim>::evaluate_model(const bool scalars_current)
   {
-    update_model_scalars();
+    if (!scalars_current)
+      update_model_scalars();
     model->compute_forces(
       bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
   }
@@ -93,16 +94,22 @@ namespace PeriArlequin
   PDZone<dim>::compute_accelerations(const double time)
   {
     update_ghost_displacements();
+    // A criterion that reads the scalars gets them for these displacements; they stay
+    // current for the forces unless a bond broke on some rank (a ghost's scalars change with
+    // bonds its own rank breaks).
+    bool scalars_current = false;
     if (fracture)
       {
-        // Bonds that break no longer count in the scalars: evaluate_model() recomputes them.
         if (fracture->needs_particle_scalars())
           update_model_scalars();
-        fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
+        const bool broke =
+          fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
+        scalars_current = fracture->needs_particle_scalars() &&
+                          !Utilities::MPI::logical_or(broke, communicator);
       }
     if (checks_overlap)
       check_damage_near_overlap(time);
-    evaluate_model();
+    evaluate_model(scalars_current);
 
     const double rho = material.density, volume = particle_volume();
     const auto   a   = state.accelerations();

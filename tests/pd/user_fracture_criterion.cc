@@ -34,18 +34,23 @@ namespace UserCriteria
                const PeriArlequin::PDMaterialModel<dim> &,
                const BondFamilies<dim> &) override
     {}
-    void
+    bool
     break_bonds(BondFamilies<dim>               &bonds,
                 ArrayView<const Tensor<1, dim>>  u,
                 ArrayView<const double>) const override
     {
+      bool broke = false;
       for (unsigned int i = 0; i < bonds.n_owned; ++i)
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           if (bonds.state[n] == BondFamilies<dim>::intact &&
               BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
                                            u[bonds.neighbor[n]] - u[i])
                   .first > critical_extension)
-            bonds.state[n] = BondFamilies<dim>::broken;
+            {
+              bonds.state[n] = BondFamilies<dim>::broken;
+              broke          = true;
+            }
+      return broke;
     }
     double
     critical_stretch() const override

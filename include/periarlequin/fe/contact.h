@@ -60,11 +60,14 @@ namespace PeriArlequin
             VectorType       &acceleration,
             VectorType       &applied_force) = 0;
 
-    /** The total contact force on the body at the last enforce() [N], summed over ranks. */
+    /**
+     * The total contact force on the body at the last enforce() [N], summed over ranks
+     * (collective: call it on every rank; the time loop itself needs no sum).
+     */
     virtual Tensor<1, dim>
     total_force() const = 0;
 
-    /** The number of nodes in contact at the last enforce(), summed over ranks. */
+    /** The number of nodes in contact at the last enforce(), summed over ranks (collective). */
     virtual unsigned int
     n_touching_nodes() const = 0;
   };
@@ -123,8 +126,9 @@ namespace PeriArlequin
     std::set<unsigned int>  boundary_ids;
     std::vector<Node>       nodes;
     MPI_Comm                communicator;
-    Tensor<1, dim>          force;
-    unsigned int            n_touching = 0;
+    /** This rank's contact force and touching nodes at the last enforce(). */
+    Tensor<1, dim>          local_force;
+    unsigned int            local_touching = 0;
   };
 } // namespace PeriArlequin
 

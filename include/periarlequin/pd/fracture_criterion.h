@@ -58,9 +58,9 @@ namespace PeriArlequin
      * needs_particle_scalars(), otherwise of the last force evaluation. A bond to a ghost is held by two ranks, which
      * must decide alike: decide from the bond's reference vector, the displacement
      * difference of its ends (BondFamilies::extension is bit-identical on both) and
-     * symmetric functions of the scalars of its ends.
+     * symmetric functions of the scalars of its ends. Returns whether a bond broke here.
      */
-    virtual void
+    virtual bool
     break_bonds(BondFamilies<dim>               &bonds,
                 ArrayView<const Tensor<1, dim>>  displacement,
                 ArrayView<const double>          scalars) const = 0;
@@ -90,7 +90,7 @@ namespace PeriArlequin
     initialize(const Parameters::Peridynamics<dim> &parameters,
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
-    void
+    bool
     break_bonds(BondFamilies<dim>               &bonds,
                 ArrayView<const Tensor<1, dim>>  displacement,
                 ArrayView<const double>          scalars) const override;
@@ -119,7 +119,7 @@ namespace PeriArlequin
     initialize(const Parameters::Peridynamics<dim> &parameters,
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
-    void
+    bool
     break_bonds(BondFamilies<dim>               &bonds,
                 ArrayView<const Tensor<1, dim>>  displacement,
                 ArrayView<const double>          scalars) const override;

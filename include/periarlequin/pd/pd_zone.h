@@ -295,9 +295,12 @@ namespace PeriArlequin
     /** Model scalars (owned, then ghosts) of the current displacements. */
     void
     update_model_scalars();
-    /** Model scalars and forces of the current displacements. */
+    /**
+     * Model scalars (unless @p scalars_current: computed for these displacements and bond
+     * states already) and forces of the current displacements.
+     */
     void
-    evaluate_model();
+    evaluate_model(const bool scalars_current = false);
 
     parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Peridynamics<dim>       &parameters;
