@@ -1,3 +1,4 @@
+#include <periarlequin/coupling/interpolation_operator.h>
 #include <periarlequin/simulator.h>
 
 #include <deal.II/base/function.h>
@@ -11,6 +12,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace PeriArlequin
 {
@@ -51,6 +53,22 @@ namespace PeriArlequin
                         "\nA model's own parameters are in the subsection of its name.");
     ContactRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Adaptive PD zone");
+    prm.declare_entry("Conversion criterion",
+                      "none",
+                      Patterns::Selection("none|" + ConversionCriterionRegistry<dim>::names()),
+                      "Which FE cells become PD during the run, by registered name (none: the "
+                      "PD zone is fixed):" +
+                        ConversionCriterionRegistry<dim>::documentation() +
+                        "\nNeeds a coupled case whose overlap is a band (Coupling/Overlap "
+                        "width). A criterion's own parameters are in the subsection of its "
+                        "name.");
+    prm.declare_entry("Check interval",
+                      "10",
+                      Patterns::Integer(1),
+                      "Ask the criterion every this many steps [-].");
+    ConversionCriterionRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -84,6 +102,20 @@ namespace PeriArlequin
     contact_model = prm.get("Model");
     if (contact_model != "none")
       contact = ContactRegistry<dim>::create(contact_model, prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Adaptive PD zone");
+    const std::string conversion = prm.get("Conversion criterion");
+    conversion_interval          = prm.get_integer("Check interval");
+    if (conversion != "none")
+      {
+        if (!coupling_parameters.coupled() || !(coupling_parameters.overlap_width > 0))
+          throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
+                                  conversion,
+                                  "none, unless the zones are coupled (Coupling/Method) across "
+                                  "a band that can move with the PD region (Coupling/Overlap "
+                                  "width > 0)");
+        conversion_criterion = ConversionCriterionRegistry<dim>::create(conversion, prm);
+      }
     prm.leave_subsection();
     prm.enter_subsection("Postprocess");
     for (const auto &name : Utilities::split_string_list(prm.get("List of postprocessors")))
@@ -201,9 +233,9 @@ namespace PeriArlequin
       {
         pd_zone->setup(problem_data, dt);
         if (blending)
-          {
-            coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
-          }
+          coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
+        if (conversion_criterion)
+          conversion_criterion->initialize(*fe_zone, *pd_zone);
         stable_time_step =
           std::min(stable_time_step,
                    pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
@@ -286,6 +318,122 @@ namespace PeriArlequin
   Simulator<dim>::advance()
   {
     integrator->step();
+    if (conversion_criterion && get_step_number() % conversion_interval == 0)
+      grow_pd_zone();
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::grow_pd_zone()
+  {
+    TimerOutput::Scope scope(timer, "PD zone growth");
+    std::vector<bool>  convert(triangulation.n_active_cells(), false);
+    conversion_criterion->mark_cells(*fe_zone, *pd_zone, convert);
+    // Each converted cell as its lower and upper corner, gathered from all ranks.
+    std::vector<Point<dim>> local_corners;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && convert[cell->active_cell_index()] &&
+          !pd_zone->contains_cell(cell))
+        {
+          local_corners.push_back(cell->vertex(0));
+          local_corners.push_back(cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1));
+        }
+    std::vector<Box<dim>> boxes;
+    for (const auto &corners : Utilities::MPI::all_gather(communicator, local_corners))
+      for (unsigned int k = 0; k < corners.size(); k += 2)
+        boxes.push_back({corners[k], corners[k + 1]});
+    if (boxes.empty())
+      return 0;
+
+    const double energy_before = kinetic_energy() + fe_zone->strain_energy() +
+                                 pd_zone->strain_energy();
+    const Tensor<1, dim> momentum_before =
+      fe_zone->linear_momentum() + pd_zone->linear_momentum();
+    // The mass each particle carries itself (a slave's is lumped on the FE nodes), by id.
+    std::unordered_map<types::particle_index, double> mass_before;
+    for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
+      mass_before[pd_zone->particle_ids()[i]] =
+        pd_zone->is_slave(i) ? 0. : pd_zone->particle_mass(i);
+    blending->add_to_pd_region(boxes);
+    pd_zone->set_region(blending->pd_region());
+    // The particles of the grown zone (the reach of setup()); the new ones take the FE
+    // field, which still lives in the converted cells.
+    const double reach =
+      2. * (pd_parameters.horizon() + 0.5 * pd_parameters.lattice_spacing) * (1. + 1e-10);
+    const std::vector<unsigned int> added = pd_zone->extend(
+      [this, reach](const Point<dim> &x) { return blending->distance_to_pd_part(x) <= reach; });
+    InterpolationOperator<dim> interpolation;
+    interpolation.reinit(*fe_zone, *pd_zone, added);
+    auto &fe_state = fe_zone->get_state();
+    auto &pd_state = pd_zone->get_state();
+    for (const auto &[fe_field, pd_field] :
+         {std::make_pair(&fe_state.displacement, pd_state.displacements()),
+          std::make_pair(&fe_state.velocity, pd_state.velocities()),
+          std::make_pair(&fe_state.acceleration, pd_state.accelerations())})
+      {
+        fe_field->update_ghost_values();
+        for (unsigned int r = 0; r < added.size(); ++r)
+          pd_field[added[r]] = interpolation.interpolate(*fe_field, r);
+      }
+    pd_zone->update_ghost_displacements();
+
+    fe_zone->restrict_to(
+      [this](const auto &cell) { return !pd_zone->contains_cell(cell); });
+    if (contact)
+      contact->initialize(*fe_zone);
+    coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
+    integrator->initialize();
+
+    // The lumped FE masses and the particle masses integrate the blending weight with
+    // different quadratures, so the mass that left the FE nodes differs slightly from the
+    // mass the particles gained: the free particles that gained mass take the momentum
+    // difference, with one velocity increment.
+    std::vector<unsigned int> gained;
+    double                    gained_mass = 0;
+    const auto                ids         = pd_zone->particle_ids();
+    for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
+      if (!pd_zone->is_slave(i) && !pd_zone->is_prescribed(i))
+        {
+          const auto   found = mass_before.find(ids[i]);
+          const double m     = pd_zone->particle_mass(i);
+          if (found == mass_before.end() || m > found->second)
+            {
+              gained.push_back(i);
+              gained_mass += m;
+            }
+        }
+    gained_mass = Utilities::MPI::sum(gained_mass, communicator);
+    if (gained_mass > 0)
+      {
+        const Tensor<1, dim> correction =
+          (momentum_before - fe_zone->linear_momentum() - pd_zone->linear_momentum()) /
+          gained_mass;
+        for (const unsigned int i : gained)
+          pd_state.velocities()[i] += correction;
+      }
+
+    const double energy_after = kinetic_energy() + fe_zone->strain_energy() +
+                                pd_zone->strain_energy();
+    conversion_energy += energy_after - energy_before;
+    converted_cells += boxes.size();
+    pcout << "  step " << get_step_number() << ": " << boxes.size()
+          << " FE cells became PD; now " << pd_zone->n_global_particles() << " particles, "
+          << fe_zone->n_dofs() << " FE DoFs" << std::endl;
+    return boxes.size();
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::n_converted_cells() const
+  {
+    return converted_cells;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::conversion_energy_change() const
+  {
+    return conversion_energy;
   }
 
   template <int dim>

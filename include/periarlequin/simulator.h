@@ -7,6 +7,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <periarlequin/adaptivity/conversion_criterion.h>
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/coupling/blending_field.h>
@@ -60,9 +61,35 @@ namespace PeriArlequin
     void
     run();
 
-    /** One step of the time integrator from the current state. */
+    /**
+     * One step of the time integrator from the current state; with an adaptive PD zone,
+     * every Adaptive PD zone/Check interval steps, grow_pd_zone() after it.
+     */
     void
     advance();
+
+    /**
+     * Between steps: the FE cells that the conversion criterion flags become pure PD. Their
+     * boxes join the PD region; the overlap band and the slave layer move outward; new
+     * particles fill the lattice sites the grown zone needs, with displacement, velocity and
+     * acceleration interpolated from the FE field; the FE zone drops the DoFs of the
+     * converted cells, keeping its field elsewhere; the coupling is rebuilt and the
+     * accelerations recomputed. Existing particles keep their state and broken bonds.
+     * Returns the number of cells converted (over all ranks).
+     */
+    unsigned int
+    grow_pd_zone();
+
+    /** Cells converted to PD since the start, over all ranks. */
+    unsigned int
+    n_converted_cells() const;
+    /**
+     * Sum over the conversions of the change of the total (kinetic plus strain) energy that
+     * each caused [J]: the PD and classical energies of a state differ, so a conversion is not
+     * energy-neutral.
+     */
+    double
+    conversion_energy_change() const;
 
     /** The coupling, or nullptr for an uncoupled case. */
     Coupling<dim> *
@@ -163,6 +190,9 @@ namespace PeriArlequin
     std::unique_ptr<FractureCriterion<dim>>   fracture_criterion;
     std::string                               contact_model;
     std::unique_ptr<Contact<dim>>             contact;
+    /** Adaptive PD zone: the criterion (nullptr: fixed zone) and how often it is asked. */
+    std::unique_ptr<ConversionCriterion<dim>> conversion_criterion;
+    unsigned int                              conversion_interval = 0;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;
@@ -170,6 +200,8 @@ namespace PeriArlequin
     std::vector<IntegratedZone *>             zones;
 
     unsigned int n_steps            = 0;
+    unsigned int converted_cells    = 0;
+    double       conversion_energy  = 0.;
     double       stable_time_step   = 0.;
     bool         setup_done         = false;
     Timer        wall_clock;

@@ -117,6 +117,44 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  Region<dim>::coalesce(const double tolerance)
+  {
+    // Along each axis: order the boxes by their extent across it, then by their start along
+    // it; neighbours in that order with equal cross extents that touch along the axis merge.
+    for (unsigned int axis = 0; axis < dim; ++axis)
+      {
+        const auto cross_less = [&](const Box<dim> &a, const Box<dim> &b) {
+          for (unsigned int d = 0; d < dim; ++d)
+            if (d != axis)
+              {
+                if (std::abs(a.lower[d] - b.lower[d]) > tolerance)
+                  return a.lower[d] < b.lower[d];
+                if (std::abs(a.upper[d] - b.upper[d]) > tolerance)
+                  return a.upper[d] < b.upper[d];
+              }
+          return false;
+        };
+        std::sort(boxes.begin(), boxes.end(), [&](const Box<dim> &a, const Box<dim> &b) {
+          if (cross_less(a, b))
+            return true;
+          if (cross_less(b, a))
+            return false;
+          return a.lower[axis] < b.lower[axis];
+        });
+        std::vector<Box<dim>> merged;
+        for (const Box<dim> &box : boxes)
+          if (!merged.empty() && !cross_less(merged.back(), box) &&
+              !cross_less(box, merged.back()) &&
+              box.lower[axis] <= merged.back().upper[axis] + tolerance)
+            merged.back().upper[axis] = std::max(merged.back().upper[axis], box.upper[axis]);
+          else
+            merged.push_back(box);
+        boxes = std::move(merged);
+      }
+  }
+
+  template <int dim>
   Region<dim>
   Region<dim>::parse(const std::string &text, const std::string &parameter)
   {

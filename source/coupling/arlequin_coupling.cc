@@ -30,6 +30,8 @@ namespace PeriArlequin
     time_step = dt;
     const MPI_Comm communicator = pd.get_communicator();
 
+    overlap_particles.clear();
+    pd_inverse_mass.clear();
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
       if (!pd.is_slave(i) && pd.blending_weights()[i] > 0)
         overlap_particles.push_back(i);
@@ -67,6 +69,7 @@ namespace PeriArlequin
                               "an overlap that holds FE nodes");
     solver = std::make_unique<MultiplierSolver<dim>>(
       *space, overlap, fe_inverse_mass, pd_inverse_mass, dt, parameters.multiplier_solver);
+    damping.reset();
     if (parameters.damping)
       damping = std::make_unique<FineScaleDamping<dim>>(
         parameters, fe.get_material(), blending, pd, overlap_particles, overlap, dt);

@@ -30,6 +30,14 @@ namespace PeriArlequin
                   Patterns::Anything(),
                   "Boxes 'lower : upper ; ...' [m] of the pure FE zone (alpha = 1). The PD "
                   "region, the overlap and this region must cover the domain.");
+      entries.add("Overlap width",
+                  overlap_width,
+                  Patterns::Double(0),
+                  "If positive, the overlap is the band of this width around "
+                  "Peridynamics/Region, alpha = min(1, distance to the PD region / width), "
+                  "and the FE region is the rest: leave Overlap region and Finite element "
+                  "region empty. Required by an adaptive PD zone, whose band moves with the "
+                  "region. At least one FE cell wide [m].");
       entries.add("Blending",
                   blending,
                   blending_names,
@@ -119,20 +127,12 @@ namespace PeriArlequin
     , pure_pd(pure_pd_region)
     , overlap_region(Region<dim>::parse(coupling.overlap_text, "Coupling/Overlap region"))
     , pure_fe(Region<dim>::parse(coupling.fe_region_text, "Coupling/Finite element region"))
+    , band_width(coupling.overlap_width)
   {
-    if (overlap_region.empty())
-      throw_invalid_parameter("Coupling/Overlap region",
-                              coupling.overlap_text,
-                              "at least one box when Coupling/Method is not none");
     if (pure_pd.empty())
       throw_invalid_parameter("Peridynamics/Region",
                               "",
                               "at least one box (the pure PD zone) when Coupling/Method is not "
-                              "none");
-    if (pure_fe.empty())
-      throw_invalid_parameter("Coupling/Finite element region",
-                              coupling.fe_region_text,
-                              "at least one box (the pure FE zone) when Coupling/Method is not "
                               "none");
 
     // Cell size of the mesh and a sample of points (vertices and centres of the cells).
@@ -143,6 +143,41 @@ namespace PeriArlequin
         n_cells[d] = geometry.subdivisions[d] << geometry.global_refinements;
         h[d]       = (geometry.upper_corner[d] - geometry.lower_corner[d]) / n_cells[d];
       }
+    length_tolerance = 1e-10 * h.norm();
+
+    if (band_width > 0)
+      {
+        for (const auto &[name, text] :
+             {std::make_pair("Coupling/Overlap region", coupling.overlap_text),
+              std::make_pair("Coupling/Finite element region", coupling.fe_region_text)})
+          if (!text.empty())
+            throw_invalid_parameter(name,
+                                    text,
+                                    "nothing when Coupling/Overlap width is set: the overlap "
+                                    "is then the band around the PD region and the FE region "
+                                    "the rest");
+        double largest_cell = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          largest_cell = std::max(largest_cell, h[d]);
+        if (band_width < largest_cell * (1. - 1e-10))
+          {
+            std::ostringstream allowed;
+            allowed << "a band at least one FE cell (" << largest_cell << " m) wide";
+            throw_invalid_parameter("Coupling/Overlap width", band_width, allowed.str());
+          }
+        return;
+      }
+
+    if (overlap_region.empty())
+      throw_invalid_parameter("Coupling/Overlap region",
+                              coupling.overlap_text,
+                              "at least one box when Coupling/Method is not none (or a band: "
+                              "Coupling/Overlap width)");
+    if (pure_fe.empty())
+      throw_invalid_parameter("Coupling/Finite element region",
+                              coupling.fe_region_text,
+                              "at least one box (the pure FE zone) when Coupling/Method is not "
+                              "none and no Coupling/Overlap width is set");
 
     // The alpha = 0 and alpha = 1 edges: apart by at least one cell across the overlap.
     for (const auto &pd_box : pure_pd.boxes)
@@ -172,7 +207,7 @@ namespace PeriArlequin
             }
         }
 
-    const double tolerance = 1e-10 * h.norm();
+    const double tolerance = length_tolerance;
     std::array<unsigned int, dim> index;
     const auto                    visit = [&](const auto &self, const unsigned int d) -> void {
       if (d == dim)
@@ -203,9 +238,10 @@ namespace PeriArlequin
   double
   BlendingField<dim>::value(const Point<dim> &x) const
   {
-    const double l1 = pure_pd.distance(x), l2 = pure_fe.distance(x);
+    const double l1 = pure_pd.distance(x);
     if (l1 == 0)
       return 0.;
+    const double l2 = band_width > 0 ? std::max(band_width - l1, 0.) : pure_fe.distance(x);
     if (l2 == 0)
       return 1.;
     if (profile == BlendingProfile::step)
@@ -217,6 +253,8 @@ namespace PeriArlequin
   bool
   BlendingField<dim>::in_overlap(const Point<dim> &x) const
   {
+    if (band_width > 0)
+      return pure_pd.distance(x) <= band_width * (1. + 1e-12);
     return overlap_region.contains(x, 1e-12 * overlap_width(x));
   }
 
@@ -224,21 +262,39 @@ namespace PeriArlequin
   double
   BlendingField<dim>::overlap_width(const Point<dim> &x) const
   {
-    return pure_pd.distance(x) + pure_fe.distance(x);
+    return band_width > 0 ? band_width : pure_pd.distance(x) + pure_fe.distance(x);
   }
 
   template <int dim>
   double
   BlendingField<dim>::distance_to_pd_part(const Point<dim> &x) const
   {
+    if (band_width > 0)
+      return std::max(pure_pd.distance(x) - band_width, 0.);
     return std::min(pure_pd.distance(x), overlap_region.distance(x));
   }
 
   template <int dim>
   const Region<dim> &
-  BlendingField<dim>::overlap() const
+  BlendingField<dim>::pd_region() const
   {
-    return overlap_region;
+    return pure_pd;
+  }
+
+  template <int dim>
+  bool
+  BlendingField<dim>::is_band() const
+  {
+    return band_width > 0;
+  }
+
+  template <int dim>
+  void
+  BlendingField<dim>::add_to_pd_region(const std::vector<Box<dim>> &boxes)
+  {
+    Assert(is_band(), ExcMessage("Only a band overlap follows a growing PD region."));
+    pure_pd.boxes.insert(pure_pd.boxes.end(), boxes.begin(), boxes.end());
+    pure_pd.coalesce(length_tolerance);
   }
 
   template class BlendingField<2>;

@@ -28,6 +28,7 @@ namespace PeriArlequin
     std::vector<unsigned int> dofs, components;
     std::vector<Point<dim>>   points;
     fe.support_points(dofs, points, components);
+    fe_slaves.clear();
     for (unsigned int k = 0; k < dofs.size(); ++k)
       if (blending.in_overlap(points[k]) && blending.value(points[k]) == 0)
         fe_slaves.push_back({dofs[k], components[k], pd.lattice_interpolation(points[k])});

@@ -39,24 +39,102 @@ namespace PeriArlequin
   template <int dim>
   void
   FEZone<dim>::setup(const WeightFunction &mass_weight_function,
-                     const WeightFunction &stiffness_weight,
+                     const WeightFunction &stiffness_weight_function,
                      const CellPredicate  &in_fe_zone)
   {
-    mass_weight = mass_weight_function;
+    mass_weight      = mass_weight_function;
+    stiffness_weight = stiffness_weight_function;
+    distribute_and_assemble(in_fe_zone);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::distribute_and_assemble(const CellPredicate &in_fe_zone)
+  {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(in_fe_zone(cell) ? 0 : 1);
     dof_handler.distribute_dofs(fe_collection);
     locally_owned_dofs    = dof_handler.locally_owned_dofs();
     locally_relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    owned_dof_component.assign(locally_owned_dofs.n_elements(), 0);
+    std::vector<types::global_dof_index> dof_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dof_indices.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < dof_indices.size(); ++i)
+            if (locally_owned_dofs.is_element(dof_indices[i]))
+              owned_dof_component[locally_owned_dofs.index_within_set(dof_indices[i])] =
+                cell->get_fe().system_to_component_index(i).first;
+        }
     reinit_matrix(stiffness_matrix);
     initialize_vector(mass);
-    assemble_mass_and_stiffness(stiffness_weight);
+    assemble_mass_and_stiffness();
   }
 
   template <int dim>
   void
-  FEZone<dim>::assemble_mass_and_stiffness(const WeightFunction &stiffness_weight)
+  FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone)
+  {
+    // The DoF indices, before and after, of the owned cells that stay FE: every owned DoF
+    // after the change lies on one of them, and every DoF of theirs was locally relevant
+    // before, so the old ghosted vectors hold the values to keep.
+    std::vector<VectorType *> kept = {&state.displacement,
+                                      &state.velocity,
+                                      &state.acceleration,
+                                      &applied_force};
+    const std::vector<VectorType> old_values = [&] {
+      std::vector<VectorType> copies;
+      for (VectorType *v : kept)
+        {
+          copies.push_back(*v);
+          copies.back().update_ghost_values();
+        }
+      return copies;
+    }();
+    std::vector<std::vector<types::global_dof_index>> old_indices(
+      triangulation.n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 && in_fe_zone(cell))
+        {
+          old_indices[cell->active_cell_index()].resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(old_indices[cell->active_cell_index()]);
+        }
+
+    distribute_and_assemble(in_fe_zone);
+
+    for (VectorType *v : kept)
+      initialize_vector(*v);
+    std::vector<types::global_dof_index> new_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
+        {
+          const auto &old = old_indices[cell->active_cell_index()];
+          AssertThrow(old.size() == cell->get_fe().n_dofs_per_cell(),
+                      ExcMessage("FEZone::restrict_to(): a cell that was not FE became FE."));
+          new_indices.resize(old.size());
+          cell->get_dof_indices(new_indices);
+          for (unsigned int i = 0; i < old.size(); ++i)
+            if (locally_owned_dofs.is_element(new_indices[i]))
+              for (unsigned int k = 0; k < kept.size(); ++k)
+                (*kept[k])(new_indices[i]) = old_values[k](old[i]);
+        }
+    for (VectorType *v : {&internal_force,
+                          &previous_applied_force,
+                          &previous_displacement,
+                          &interface_force})
+      initialize_vector(*v);
+    for (VectorType *v : {&state.displacement, &state.velocity, &state.acceleration})
+      v->update_ghost_values();
+    prescribed = prescribed_dofs(*problem_data);
+    nodal_force_weights.clear();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::assemble_mass_and_stiffness()
   {
     const double lambda = material.effective_lambda(dim);
     const double mu     = material.shear_modulus();

@@ -175,6 +175,16 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  Tensor<1, dim>
+  FEZone<dim>::linear_momentum() const
+  {
+    Tensor<1, dim> sum;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      sum[owned_dof_component[i]] += mass.local_element(i) * state.velocity.local_element(i);
+    return Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
   double
   FEZone<dim>::strain_energy() const
   {
@@ -249,6 +259,7 @@ namespace PeriArlequin
   template void FEZone<dim>::account_work();                                                 \
   template double FEZone<dim>::kinetic_energy() const;                                       \
   template double FEZone<dim>::strain_energy() const;                                        \
+  template Tensor<1, dim> FEZone<dim>::linear_momentum() const;                              \
   template double FEZone<dim>::external_work() const;                                        \
   template FEZone<dim>::State &FEZone<dim>::get_state();                                     \
   template const FEZone<dim>::State &FEZone<dim>::get_state() const;                         \

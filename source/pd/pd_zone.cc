@@ -40,8 +40,9 @@ namespace PeriArlequin
     , fracture(std::move(fracture))
     , prescribed(parameters)
     , extent(extent ? extent : SiteFilter([this](const Point<dim> &x) {
-        return this->parameters.region.contains(x);
+        return region.contains(x);
       }))
+    , region(parameters.region)
     , blending_weight([](const Point<dim> &) { return 0.; })
     , lattice(to_point<dim>(geometry.lower_corner),
               to_point<dim>(geometry.upper_corner),
@@ -92,7 +93,14 @@ namespace PeriArlequin
   bool
   PDZone<dim>::contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const
   {
-    return parameters.region.contains(cell->center());
+    return region.contains(cell->center());
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_region(const Region<dim> &grown)
+  {
+    region = grown;
   }
 
   template <int dim>
@@ -103,7 +111,7 @@ namespace PeriArlequin
     time_step    = dt;
     const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
     particle_handler.initialize(triangulation, mapping, n_properties);
-    insert_particles(extent);
+    insert_particles([this](const Point<dim> &x, types::particle_index) { return extent(x); });
     AssertThrow(particle_handler.n_global_particles() > 0,
                 ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
                            "site of spacing 'Peridynamics/Lattice spacing'; allowed: boxes "
@@ -123,7 +131,8 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::insert_particles(const SiteFilter &accept)
+  PDZone<dim>::insert_particles(
+    const std::function<bool(const Point<dim> &, types::particle_index)> &accept)
   {
     for (const auto &cell : triangulation.active_cell_iterators())
       {
@@ -132,7 +141,7 @@ namespace PeriArlequin
         const auto [lower, upper] = cell_bounds<dim>(cell);
         lattice.for_each_site_in(lower, upper, [&](const auto &site) {
           const Point<dim> x = lattice.position(site);
-          if (accept(x))
+          if (accept(x, lattice.id(site)))
             particle_handler.insert_particle(
               x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
         });
@@ -320,8 +329,9 @@ namespace PeriArlequin
     extent = [old_extent, additional_sites](const Point<dim> &x) {
       return old_extent(x) || additional_sites(x);
     };
-    insert_particles(
-      [&](const Point<dim> &x) { return additional_sites(x) && !old_extent(x); });
+    insert_particles([&](const Point<dim> &x, const types::particle_index id) {
+      return additional_sites(x) && old_index.count(id) == 0;
+    });
     build_particle_structures();
 
     const auto ids = ghosts.ids();

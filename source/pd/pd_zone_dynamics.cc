@@ -251,6 +251,18 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  Tensor<1, dim>
+  PDZone<dim>::linear_momentum() const
+  {
+    const auto     v = state.velocities();
+    Tensor<1, dim> sum;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (!slave[i])
+        sum += mass_weight[i] * v[i];
+    return material.density * particle_volume() * Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
   double
   PDZone<dim>::strain_energy() const
   {

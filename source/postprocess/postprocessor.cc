@@ -98,6 +98,31 @@ namespace PeriArlequin
     history.add_value("contact_nodes", contact ? contact->n_touching_nodes() : 0);
   }
 
+  template <int dim>
+  void
+  LinearMomentum<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    Tensor<1, dim> momentum;
+    if (simulator.has_fe_zone())
+      momentum += simulator.get_fe_zone().linear_momentum();
+    if (simulator.get_pd_zone())
+      momentum += simulator.get_pd_zone()->linear_momentum();
+    const char *axes[3] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      history.add_value(std::string("momentum_") + axes[d], momentum[d]);
+  }
+
+  template <int dim>
+  void
+  ZoneSizes<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const PDZone<dim> *pd = simulator.get_pd_zone();
+    history.add_value("pd_particles", pd ? pd->n_global_particles() : 0);
+    history.add_value("fe_dofs", simulator.has_fe_zone() ? simulator.get_fe_zone().n_dofs() : 0);
+    history.add_value("converted_cells", simulator.n_converted_cells());
+    history.add_value("conversion_energy", simulator.conversion_energy_change());
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
   template class EnergyPostprocessor<2>;
@@ -110,6 +135,10 @@ namespace PeriArlequin
   template class BondStretches<3>;
   template class ContactForces<2>;
   template class ContactForces<3>;
+  template class LinearMomentum<2>;
+  template class LinearMomentum<3>;
+  template class ZoneSizes<2>;
+  template class ZoneSizes<3>;
   template class PluginRegistry<Postprocessor<2>>;
   template class PluginRegistry<Postprocessor<3>>;
 
@@ -128,6 +157,13 @@ namespace PeriArlequin
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(ContactForces,
                                       "contact forces",
                                       "total contact force on the body and nodes in contact")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(LinearMomentum,
+                                      "momentum",
+                                      "linear momentum of both zones, per component")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(
+    ZoneSizes,
+    "zone sizes",
+    "PD particles, FE DoFs, cells converted to PD and the energy change of the conversions")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ConstraintResiduals,
     "constraint residuals",

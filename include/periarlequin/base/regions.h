@@ -47,6 +47,14 @@ namespace PeriArlequin
     double
     distance(const Point<dim> &p) const;
 
+    /**
+     * Merge boxes that share a whole face (within @p tolerance [m]), axis by axis, so that a
+     * region grown cell by cell keeps few boxes and distance() stays cheap. The union is
+     * unchanged.
+     */
+    void
+    coalesce(const double tolerance);
+
     /** Parse the text of @p parameter (named in errors) into a region. */
     static Region<dim>
     parse(const std::string &text, const std::string &parameter);

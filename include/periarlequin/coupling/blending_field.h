@@ -58,6 +58,8 @@ namespace PeriArlequin
       std::string      method = "none";
       /** Overlap (0 < alpha < 1) and pure FE (alpha = 1) regions; pure PD is the PD region. */
       std::string      overlap_text, fe_region_text;
+      /** Width of the band around the PD region that is the overlap (0: the regions) [m]. */
+      double           overlap_width         = 0.;
       Blending         blending = Blending::energy;
       MultiplierSolver multiplier_solver     = MultiplierSolver::diagonal;
       bool             damping               = true;
@@ -84,8 +86,14 @@ namespace PeriArlequin
    * alpha = l1 / (l1 + l2) in the overlap with l1 the distance to the pure PD region and l2 the
    * distance to the pure FE region, so it is linear across a strip. For the "bad" coupling it
    * is the step that splits the overlap into a PD-to-FE half (alpha = 0) and an FE-to-PD half
-   * (alpha = 1) (BlendingProfile::step). The constructor checks the zones: they cover the domain, the alpha = 0 and
-   * alpha = 1 edges neither touch nor cross, and the overlap is at least one FE cell wide.
+   * (alpha = 1) (BlendingProfile::step).
+   *
+   * The zones are given either as boxes (Coupling/Overlap region and Finite element region;
+   * the constructor checks that they cover the domain, that the alpha = 0 and alpha = 1 edges
+   * neither touch nor cross and that the overlap is at least one FE cell wide), or as a band
+   * of width w around the PD region (Coupling/Overlap width): alpha = min(1, l1 / w), which is
+   * eq. 37 across a strip and needs no FE region. Only a band follows a PD region that grows
+   * (add_to_pd_region()).
    */
   template <int dim>
   class BlendingField
@@ -112,12 +120,28 @@ namespace PeriArlequin
     double
     distance_to_pd_part(const Point<dim> &x) const;
 
+    /** The pure PD region (alpha = 0). */
     const Region<dim> &
-    overlap() const;
+    pd_region() const;
+
+    /** Is the overlap a band around the PD region (Coupling/Overlap width > 0)? */
+    bool
+    is_band() const;
+
+    /**
+     * Add @p boxes to the pure PD region; the band of the overlap moves outward with it.
+     * Only for a band.
+     */
+    void
+    add_to_pd_region(const std::vector<Box<dim>> &boxes);
 
   private:
     BlendingProfile            profile;
     Region<dim>                pure_pd, overlap_region, pure_fe;
+    /** Width of the band (0: the overlap and FE regions are boxes) [m]. */
+    double                     band_width;
+    /** Tolerance for merging the boxes of the PD region [m]. */
+    double                     length_tolerance;
   };
 } // namespace PeriArlequin
 

@@ -45,7 +45,8 @@ namespace PeriArlequin
 
     /**
      * Build the operators once both zones are set up (after FEZone::initialize_state() and
-     * PDZone::setup()); may set the FE zone's force hooks.
+     * PDZone::setup()); may set the FE zone's force hooks. Called again, from scratch, after
+     * an adaptive PD zone grew (FEZone::restrict_to(), PDZone::extend()).
      */
     virtual void
     initialize(const BlendingField<dim> &blending,

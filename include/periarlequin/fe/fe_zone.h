@@ -75,6 +75,18 @@ namespace PeriArlequin
           const CellPredicate  &in_fe_zone);
 
     /**
+     * Between steps, turn the FE cells that @p in_fe_zone no longer accepts into FE_Nothing
+     * (an adaptive PD zone took them; a cell never returns to FE): DoFs are distributed
+     * again, mass and stiffness assembled with the weight functions of setup() (whose values
+     * may have changed), and the displacement, velocity, acceleration and applied force keep
+     * their values at the remaining nodes, as a solution transfer across the hp change does
+     * for nodal elements. The prescribed DoFs are found again and the work done so far is
+     * kept. Nodal force weights, hooks and contact must be set again by their owners.
+     */
+    void
+    restrict_to(const CellPredicate &in_fe_zone);
+
+    /**
      * Initial displacement and velocity from the problem's initial data at t = 0, and the
      * prescribed boundary DoFs (their motion by central differences over @p time_step).
      * @p data must outlive the zone. Call after setup().
@@ -104,6 +116,9 @@ namespace PeriArlequin
     /** 1/2 u . F_int of the last computed forces. */
     double
     strain_energy() const override;
+    /** Sum of lumped mass times nodal velocity [N s] (a coupling's lumped slave masses too). */
+    Tensor<1, dim>
+    linear_momentum() const;
     double
     external_work() const override;
 
@@ -194,8 +209,11 @@ namespace PeriArlequin
     n_dofs() const;
 
   private:
+    /** FE indices from @p in_fe_zone, DoFs, matrix and vector layouts, mass and stiffness. */
     void
-    assemble_mass_and_stiffness(const WeightFunction &stiffness_weight);
+    distribute_and_assemble(const CellPredicate &in_fe_zone);
+    void
+    assemble_mass_and_stiffness();
 
     const parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Material                       material;
@@ -209,7 +227,9 @@ namespace PeriArlequin
     IndexSet                                         locally_relevant_dofs;
     TrilinosWrappers::SparseMatrix                   stiffness_matrix;
     VectorType                                       mass;
-    WeightFunction                                   mass_weight;
+    /** The vector component of each owned DoF, in local order. */
+    std::vector<unsigned char>                       owned_dof_component;
+    WeightFunction                                   mass_weight, stiffness_weight;
 
     const ProblemData<dim>                          *problem_data = nullptr;
     double                                           time_step    = 0;

@@ -97,6 +97,13 @@ namespace PeriArlequin
     contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
     /**
+     * The pure PD region becomes @p grown (an adaptive zone; Peridynamics/Region at the
+     * start). Cells whose centre it contains are PD cells; call extend() for the particles.
+     */
+    void
+    set_region(const Region<dim> &grown);
+
+    /**
      * Particles, ghosts, bonds, pre-cracks, model, initial state (without accelerations:
      * the integrator computes them once the coupling has set the slaves). @p data must
      * outlive the zone.
@@ -137,6 +144,9 @@ namespace PeriArlequin
     kinetic_energy() const override;
     double
     strain_energy() const override;
+    /** Sum of mass times velocity of the particles that carry their mass (not the slaves) [N s]. */
+    Tensor<1, dim>
+    linear_momentum() const;
     /** Kinetic and strain energy of the particles in @p region [J]. */
     std::pair<double, double>
     energies_in(const Region<dim> &region) const;
@@ -251,7 +261,8 @@ namespace PeriArlequin
     /**
      * Add particles between steps at the lattice sites of locally owned cells that
      * @p additional_sites accepts and that hold none yet; the zone's extent becomes the
-     * union. Existing particles keep their kinematics and their broken bonds; ghosts,
+     * union (an extent that grows by itself, as that of an adaptive zone, may be passed as
+     * @p additional_sites). Existing particles keep their kinematics and their broken bonds; ghosts,
      * bonds (with pre-cracks and no-fail regions), model constants, blending weights and
      * prescribed particles are rebuilt as set-up builds them. The new particles start at
      * rest and undeformed; returns their local numbers, for the caller to set their state.
@@ -261,9 +272,13 @@ namespace PeriArlequin
     extend(const SiteFilter &additional_sites);
 
   private:
-    /** Insert a particle at every site of a locally owned cell that @p accept takes. */
+    /**
+     * Insert a particle at every site of a locally owned cell that @p accept takes, given
+     * its position and lattice id.
+     */
     void
-    insert_particles(const SiteFilter &accept);
+    insert_particles(
+      const std::function<bool(const Point<dim> &, types::particle_index)> &accept);
     /** Local numbers, ghosts, bonds, weights, model and prescribed particles. */
     void
     build_particle_structures();
@@ -315,6 +330,8 @@ namespace PeriArlequin
     std::unique_ptr<FractureCriterion<dim>>    fracture;
     PrescribedParticles<dim>                   prescribed;
     SiteFilter                                 extent;
+    /** The pure PD region (Peridynamics/Region, grown by set_region()). */
+    Region<dim>                                region;
     Box<dim>                                   domain;
     WeightFunction                             blending_weight;
     bool                                       energy_blending     = false;

@@ -107,6 +107,27 @@ namespace PeriArlequin
     void
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
   };
+
+  /** Linear momentum of both zones [N s], per component (lumped FE masses, PD particles). */
+  template <int dim>
+  class LinearMomentum : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
+
+  /**
+   * Size of the zones (an adaptive PD zone grows): PD particles, FE DoFs, cells converted to
+   * PD so far and the energy change the conversions caused [J].
+   */
+  template <int dim>
+  class ZoneSizes : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
 } // namespace PeriArlequin
 
 /**

@@ -1,0 +1,239 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <periarlequin/adaptivity/conversion_criterion.h>
+#include <periarlequin/base/parameters.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace PeriArlequin
+{
+  namespace
+  {
+    /** The axis-aligned box of a cell of the (box) mesh. */
+    template <int dim, typename CellIterator>
+    Box<dim>
+    cell_box(const CellIterator &cell)
+    {
+      return Box<dim>{cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
+    }
+
+    /**
+     * Flag the locally owned FE cells within @p distance of one of @p points (the points of
+     * all ranks). The points are sorted along x so that each cell looks at a slab only.
+     */
+    template <int dim>
+    void
+    mark_cells_near(const FEZone<dim>       &fe_zone,
+                    std::vector<Point<dim>> &points,
+                    const double             distance,
+                    std::vector<bool>       &convert)
+    {
+      std::sort(points.begin(), points.end(), [](const Point<dim> &a, const Point<dim> &b) {
+        return a[0] < b[0];
+      });
+      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+        {
+          if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
+            continue;
+          const Box<dim> box   = cell_box<dim>(cell);
+          auto           first = std::lower_bound(points.begin(),
+                                        points.end(),
+                                        box.lower[0] - distance,
+                                        [](const Point<dim> &p, const double x) {
+                                          return p[0] < x;
+                                        });
+          for (; first != points.end() && (*first)[0] <= box.upper[0] + distance; ++first)
+            if (box.distance(*first) < distance)
+              {
+                convert[cell->active_cell_index()] = true;
+                break;
+              }
+        }
+    }
+
+    /** Gather the points of all ranks into one list. */
+    template <int dim>
+    std::vector<Point<dim>>
+    gather_points(const std::vector<Point<dim>> &local, const MPI_Comm communicator)
+    {
+      std::vector<Point<dim>> all;
+      for (const auto &part : Utilities::MPI::all_gather(communicator, local))
+        all.insert(all.end(), part.begin(), part.end());
+      return all;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ConversionCriterion<dim>::parse_parameters(ParameterHandler &)
+  {}
+
+  template <int dim>
+  void
+  ConversionCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &)
+  {}
+
+  template <int dim>
+  void
+  DamageProximityCriterion<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Distance",
+                      "0",
+                      Patterns::Double(0),
+                      "FE cells closer than this to a damaged particle become PD. It must "
+                      "exceed two bond reaches, 2 (delta + dx/2), plus the distance a crack "
+                      "runs between two checks (Adaptive PD zone/Check interval) [m].");
+    prm.declare_entry("Damage threshold",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "A particle counts as damaged when its damage (broken share of its "
+                      "bond volume) exceeds this [-].");
+  }
+
+  template <int dim>
+  void
+  DamageProximityCriterion<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    distance         = prm.get_double("Distance");
+    damage_threshold = prm.get_double("Damage threshold");
+  }
+
+  template <int dim>
+  void
+  DamageProximityCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &pd_zone)
+  {
+    const auto &parameters = pd_zone.get_parameters();
+    AssertThrow(parameters.fracture,
+                ExcMessage("Invalid input: parameter 'Adaptive PD zone/Conversion criterion' = "
+                           "'damage distance'; allowed: a criterion that needs no damage "
+                           "(strain), since 'Peridynamics/Fracture' is off."));
+    const double reach = parameters.horizon() + 0.5 * parameters.lattice_spacing;
+    if (distance <= 2. * reach)
+      {
+        std::ostringstream allowed;
+        allowed << "a distance larger than two bond reaches, 2 (delta + dx/2) = " << 2. * reach
+                << " m: damage closer to the overlap stops a coupled run";
+        throw_invalid_parameter("Adaptive PD zone/damage distance/Distance",
+                                distance,
+                                allowed.str());
+      }
+  }
+
+  template <int dim>
+  void
+  DamageProximityCriterion<dim>::mark_cells(const FEZone<dim> &fe_zone,
+                                            const PDZone<dim> &pd_zone,
+                                            std::vector<bool> &convert) const
+  {
+    const auto              damage = pd_zone.get_bonds().damage();
+    const auto              x      = pd_zone.reference_positions();
+    std::vector<Point<dim>> damaged;
+    for (unsigned int i = 0; i < damage.size(); ++i)
+      if (damage[i] > damage_threshold)
+        damaged.push_back(x[i]);
+    damaged = gather_points(damaged, pd_zone.get_communicator());
+    mark_cells_near(fe_zone, damaged, distance, convert);
+  }
+
+  template <int dim>
+  void
+  StrainCriterion<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Strain",
+                      "0",
+                      Patterns::Double(0),
+                      "FE cells whose largest principal strain at the centre reaches this "
+                      "become PD; 0: use Fraction of critical stretch [-].");
+    prm.declare_entry("Fraction of critical stretch",
+                      "0.5",
+                      Patterns::Double(0),
+                      "With Strain = 0, the threshold is this fraction of the critical "
+                      "stretch of Peridynamics/Fracture criterion [-].");
+    prm.declare_entry("Buffer",
+                      "0",
+                      Patterns::Double(0),
+                      "FE cells within this distance of a cell over the threshold become PD "
+                      "with it [m].");
+  }
+
+  template <int dim>
+  void
+  StrainCriterion<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    strain_threshold = prm.get_double("Strain");
+    stretch_fraction = prm.get_double("Fraction of critical stretch");
+    buffer           = prm.get_double("Buffer");
+  }
+
+  template <int dim>
+  void
+  StrainCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &pd_zone)
+  {
+    if (strain_threshold > 0)
+      return;
+    strain_threshold = stretch_fraction * pd_zone.get_critical_stretch();
+    if (!(strain_threshold > 0))
+      throw_invalid_parameter("Adaptive PD zone/strain/Strain",
+                              0,
+                              "a positive strain, unless the fracture criterion has a critical "
+                              "stretch (Peridynamics/Fracture criterion = critical stretch) "
+                              "and Fraction of critical stretch is positive");
+  }
+
+  template <int dim>
+  void
+  StrainCriterion<dim>::mark_cells(const FEZone<dim> &fe_zone,
+                                   const PDZone<dim> &pd_zone,
+                                   std::vector<bool> &convert) const
+  {
+    const auto &u = fe_zone.get_state().displacement;
+    u.update_ghost_values();
+    const auto &dof_handler = fe_zone.get_dof_handler();
+    const QMidpoint<dim>             centre;
+    FEValues<dim>                    fe_values(dof_handler.get_fe(0), centre, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(1);
+    std::vector<Point<dim>>              strained;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(u, strain);
+        if (eigenvalues(strain[0])[0] >= strain_threshold)
+          {
+            convert[cell->active_cell_index()] = true;
+            strained.push_back(cell->center());
+          }
+      }
+    if (buffer > 0)
+      {
+        // Measured from the flagged cells' centres: half a cell is added to the buffer.
+        strained = gather_points(strained, pd_zone.get_communicator());
+        const double half_cell = 0.5 * dof_handler.begin_active()->diameter() / std::sqrt(dim);
+        mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
+      }
+  }
+
+  template class ConversionCriterion<2>;
+  template class ConversionCriterion<3>;
+  template class DamageProximityCriterion<2>;
+  template class DamageProximityCriterion<3>;
+  template class StrainCriterion<2>;
+  template class StrainCriterion<3>;
+  template class PluginRegistry<ConversionCriterion<2>>;
+  template class PluginRegistry<ConversionCriterion<3>>;
+
+  PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(DamageProximityCriterion,
+                                             "damage distance",
+                                             "FE cells within a distance of a damaged particle "
+                                             "become PD")
+  PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(StrainCriterion,
+                                             "strain",
+                                             "FE cells whose largest principal strain reaches a "
+                                             "threshold (and their neighbours) become PD")
+} // namespace PeriArlequin
