@@ -6,13 +6,17 @@
 # 1 mm (lattice 0.3125 mm, m = 3.2), run to 43 us. Runs pure PD and coupled (PD strip around
 # the crack line, overlaps of 5 FE cells above and below, FE beyond, weak coupling, force
 # blending, fine-scale damping) at FE/PD size ratios 8 and 16, on the 100 x 40 mm plate and on
-# the 100 x 120 mm plate, then prints the table and draws the figures:
-#   scripts/crack_branching.sh <build directory> <work directory> [<mpi ranks>]
+# the 100 x 120 mm plate, and with an adaptive PD zone that starts around the notch and grows
+# with the crack (doc/adaptive_zone.md), then prints the table and draws the figures:
+#   scripts/crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]
+# <runs>: a space-separated list of run names to make (default: all).
 # Figures (scripts/plot_cracks.sh) and the table go to <work directory>; takes some minutes.
 set -euo pipefail
-build=$(cd "${1:?usage: crack_branching.sh <build directory> <work directory> [<mpi ranks>]}" && pwd)
-work=${2:?usage: crack_branching.sh <build directory> <work directory> [<mpi ranks>]}
+usage="usage: crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]"
+build=$(cd "${1:?$usage}" && pwd)
+work=${2:?$usage}
 ranks=${3:-1}
+only=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
@@ -20,8 +24,9 @@ source "$here/study_lib.sh"
 
 dx=3.125e-4
 # case <name> <height [m]> <PD strip half width [m], 0: pure PD> <FE cell [m]> <overlap cells>
+#      [<damage distance [m]>: adaptive PD zone, starting as the strip along the notch]
 case_file() {
-  local name=$1 height=$2 half=$3 cell=$4 layers=$5
+  local name=$1 height=$2 half=$3 cell=$4 layers=$5 distance=${6:-}
   local mid nx ny
   mid=$(calc "$height / 2")
   nx=$(calc "int(0.1 / $cell + 0.5)")
@@ -49,6 +54,24 @@ EOF
   if [ "$half" = 0 ]; then
     echo "  set Region = 0, 0 : 0.1, $height"
     echo "end"
+  elif [ -n "$distance" ]; then
+    # The notch and one cell around it; the band of the overlap moves with the zone.
+    cat << EOF
+  set Region = 0, $(calc "$mid - $half") : $(calc "0.05 + $cell"), $(calc "$mid + $half")
+end
+subsection Coupling
+  set Method        = weak
+  set Blending      = force
+  set Overlap width = $(calc "$layers * $cell")
+end
+subsection Adaptive PD zone
+  set Conversion criterion = damage distance
+  set Check interval       = 20
+  subsection damage distance
+    set Distance = $distance
+  end
+end
+EOF
   else
     local a b o1 o2
     a=$(calc "$mid - $half"); b=$(calc "$mid + $half")
@@ -91,12 +114,13 @@ subsection Output
   set Print timing summary = true
 end
 subsection Postprocess
-  set List of postprocessors = energies, constraint residuals, cracks
+  set List of postprocessors = energies, constraint residuals, cracks, zone sizes
 end
 EOF
 }
 
 run() {
+  [ -z "$only" ] || [[ " $only " == *" $1 "* ]] || return 0
   run_case "$@"
   "$here/plot_cracks.sh" "$1" "${reference:-}" > /dev/null || true
 }
@@ -118,6 +142,9 @@ run coupled8_120 0.12 0.02 0.0025 5
 run coupled16_120 0.12 0.02 0.005 5
 run coupled8_120_narrow 0.12 0.01 0.0025 5
 run coupled16_120_narrow 0.12 0.01 0.005 5
+# Adaptive: PD around the notch only (|y - 60| <= one cell), overlap band of 2 cells, FE cells
+# within 5 mm of damage become PD (checked every 20 steps, 0.5 us).
+run adaptive8_120 0.12 0.0025 0.0025 2 0.005
 
 "$here/crack_branching_table.sh" pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120 \
-  coupled8_120_narrow coupled16_120_narrow
+  coupled8_120_narrow coupled16_120_narrow adaptive8_120

@@ -416,9 +416,10 @@ namespace PeriArlequin
                                 pd_zone->strain_energy();
     conversion_energy += energy_after - energy_before;
     converted_cells += boxes.size();
-    pcout << "  step " << get_step_number() << ": " << boxes.size()
-          << " FE cells became PD; now " << pd_zone->n_global_particles() << " particles, "
-          << fe_zone->n_dofs() << " FE DoFs" << std::endl;
+    if (output_parameters.progress_interval > 0)
+      pcout << "  step " << get_step_number() << ": " << boxes.size()
+            << " FE cells became PD; now " << pd_zone->n_global_particles() << " particles, "
+            << fe_zone->n_dofs() << " FE DoFs" << std::endl;
     return boxes.size();
   }
 

@@ -256,7 +256,9 @@ namespace PeriArlequin
             << position << ") m, one bond away from the overlap, broke. The coupling assumes "
             << "an intact continuum in the overlap and the FE zone, so the run stops here. "
             << "Enlarge the PD region around the crack path (Peridynamics/Region, "
-            << "Coupling/Overlap region and Coupling/Finite element region).";
+            << "Coupling/Overlap region and Coupling/Finite element region), or let it grow "
+            << "with the crack (Adaptive PD zone; if it does already, a larger damage "
+            << "distance or a smaller check interval).";
     AssertThrow(false, ExcMessage(message.str()));
   }
 

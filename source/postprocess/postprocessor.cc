@@ -109,7 +109,7 @@ namespace PeriArlequin
       momentum += simulator.get_pd_zone()->linear_momentum();
     const char *axes[3] = {"x", "y", "z"};
     for (unsigned int d = 0; d < dim; ++d)
-      history.add_value(std::string("momentum_") + axes[d], momentum[d]);
+      history.add_value(std::string("linear_momentum_") + axes[d], momentum[d]);
   }
 
   template <int dim>
@@ -158,7 +158,7 @@ namespace PeriArlequin
                                       "contact forces",
                                       "total contact force on the body and nodes in contact")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(LinearMomentum,
-                                      "momentum",
+                                      "linear momentum",
                                       "linear momentum of both zones, per component")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ZoneSizes,

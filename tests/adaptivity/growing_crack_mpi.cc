@@ -1,0 +1,98 @@
+// A running crack grows the PD zone, on 2 ranks as on 1. The notched glass plate of
+// coupling/crack_mpi (0.1 x 0.04 m, E = 72 GPa, traction 2 MPa on the long edges, lattice
+// 0.625 mm, delta = 2 mm, FE cells 2.5 mm, a 50 mm notch along y = 20 mm, G0 = 3.8 J/m^2,
+// weak coupling with force blending, damping constant 10 for this narrow band) starts with PD only around the notch, [0, 0.06] x
+// [0.0125, 0.0275], an overlap band of 5 mm, and the damage-distance criterion (7.5 mm, every
+// 10 steps): the zone grows along the notch first, then ahead of the running tip. Run to 20 us
+// on all ranks and again on rank 0 alone:
+//  - the crack ran (more than 100 broken bond ends) and the zone grew while it ran (more cells
+//    converted at the end than after the first check);
+//  - broken bonds and converted cells identical at every record (a conversion depends on the
+//    damage only, which both runs break alike; particles keep their lattice ids);
+//  - crack area, particle count and the energy change of the conversions agree to 1e-10 of
+//    their magnitude (sums in another order).
+
+#include "../tests.h"
+
+using namespace PeriArlequinTests;
+
+std::string
+growing_crack_text()
+{
+  std::ostringstream text;
+  text << "set Dimension = 2\n"
+       << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
+       << "  set Subdivisions = 40, 16\nend\n"
+       << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
+       << "  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
+       << "subsection Peridynamics\n  set Region = 0, 0.0125 : 0.06, 0.0275\n"
+       << "  set Lattice spacing = 6.25e-4\n  set Horizon factor = 3.2\n"
+       << "  set Fracture = true\n  set Critical energy release rate = 3.8\n"
+       << "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
+       << "subsection Boundary conditions\n";
+  for (const unsigned int id : {2, 3})
+    text << "  subsection Boundary " << id
+         << "\n    set Type = traction\n    subsection Function\n"
+         << "      set Function expression = 0; " << (id == 2 ? "-2e6" : "2e6")
+         << "\n    end\n  end\n";
+  text << "end\n"
+       << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
+       << "  set Overlap width = 0.005\n  set Damping constant = 10\nend\n"
+       << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\n"
+       << "  set Check interval = 10\n  subsection damage distance\n"
+       << "    set Distance = 0.0075\n  end\nend\n"
+       << "subsection Time\n  set Time step = 4e-8\n  set End time = 2e-5\nend\n"
+       << quiet_output()
+       << "subsection Output\n  set Energy interval = 25\nend\n"
+       << "subsection Postprocess\n  set List of postprocessors = energies, cracks, zone sizes\n"
+       << "end\n";
+  return text.str();
+}
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] {
+    require_two_ranks();
+    const std::string text     = growing_crack_text();
+    auto              parallel = make_simulator<2>(text, MPI_COMM_WORLD);
+    parallel->run();
+    const auto &history = parallel->get_energy_history();
+    const auto  broken  = history.column("broken_bonds");
+    const auto  cells   = history.column("converted_cells");
+    std::map<std::string, double> worst;
+    if (is_root())
+      {
+        auto serial = make_simulator<2>(text, MPI_COMM_SELF);
+        serial->run();
+        for (const std::string column : {"broken_bonds",
+                                         "converted_cells",
+                                         "crack_area",
+                                         "pd_particles",
+                                         "conversion_energy"})
+          {
+            const auto a = history.column(column), b = serial->get_energy_history().column(column);
+            double     magnitude = 0, difference = 0;
+            for (unsigned int n = 0; n < a.size(); ++n)
+              {
+                magnitude  = std::max(magnitude, std::abs(b[n]));
+                difference = std::max(difference, std::abs(a[n] - b[n]));
+              }
+            worst[column] = magnitude > 0 ? difference / magnitude : difference;
+            report(column + " at the end", b.back());
+          }
+        report("cells converted after the first check", cells[1]);
+      }
+    const auto broadcast = [](const double x) { return Utilities::MPI::broadcast(MPI_COMM_WORLD, x, 0); };
+    check_above("broken bond ends at the end (a crack ran)", broadcast(broken.back() - broken.front()), 100);
+    check_above("cells converted at the end - after the first check (the zone grew with the crack)",
+                broadcast(cells.back() - cells[1]),
+                0.5);
+    for (const std::string column : {"broken_bonds", "converted_cells"})
+      check_below("largest |" + column + ", all ranks - rank 0 alone|", broadcast(worst[column]), 1e-15);
+    for (const std::string column : {"crack_area", "pd_particles", "conversion_energy"})
+      check_below("largest relative |" + column + ", all ranks - rank 0 alone|",
+                  broadcast(worst[column]),
+                  1e-10);
+  });
+}
