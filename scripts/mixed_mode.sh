@@ -3,20 +3,21 @@
 # square (E = 29 GPa, nu = 0.29, rho = 2400 kg/m^3, G0 = 36 kJ/m^2) with a crack from the middle
 # of its left side to the centre, loaded by the crack-tip field of eq. 82 on its four sides
 # with K_eff = Kdot t at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
-# Pure PD and coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
+# Pure PD, coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
 # beyond, weak coupling, force blending, damping constant 10: the default 30 over-damps the
-# narrow overlaps at this time step). Prints the table of doc/mixed_mode.md and draws each
+# narrow overlaps at this time step) and adaptive (PD on the crack only, growing with it,
+# doc/adaptive_zone.md). Prints the table of doc/mixed_mode.md and draws each
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
 #   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
-# coupled, m6_coupled, m6_coupled_angles, bond_energy, stress. Takes about three hours for all
+# coupled, m6_coupled, m6_coupled_angles, adaptive, bond_energy, stress. Takes about three hours for all
 # on one core.
 set -euo pipefail
 usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles bond_energy stress}
+groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles adaptive bond_energy stress}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
@@ -24,7 +25,7 @@ cd "$work"
 source "$here/study_lib.sh"
 
 # case_file <name> <plane: strain|stress> <psi [deg]> <T_c [s]> <lattice sites per side>
-#           <horizon factor> <FE cells per side> <coupled: 0|1> [<fracture criterion>]
+#           <horizon factor> <FE cells per side> <coupled: 0|1|2 (adaptive)> [<fracture criterion>]
 case_file() {
   local name=$1 plane=$2 psi=$3 tc=$4 n=$5 m=$6 cells=$7 coupled=$8 criterion=${9:-critical stretch}
   local L=0.03125 dx c kc kdot end
@@ -58,6 +59,30 @@ EOF
   if [ "$coupled" = 0 ]; then
     echo "  set Region = -$L, -$L : $L, $L"
     echo "end"
+  elif [ "$coupled" = 2 ]; then
+    # Adaptive: PD on the crack and the tip, two horizons around them (rounded up to cells),
+    # an overlap band of 2 cells; FE cells within 3 horizons of damage become PD, checked
+    # every 20 steps.
+    local delta h
+    delta=$(calc "$m * $dx")
+    h=$(calc "int((2 * $delta) / $c + 0.999) * $c")
+    echo "  set Region = -$L, -$h : $h, $h"
+    echo "end"
+    cat << EOF
+subsection Coupling
+  set Method           = weak
+  set Blending         = force
+  set Damping constant = 10
+  set Overlap width    = $(calc "2 * $c")
+end
+subsection Adaptive PD zone
+  set Conversion criterion = damage distance
+  set Check interval       = 20
+  subsection damage distance
+    set Distance = $(calc "3 * $delta")
+  end
+end
+EOF
   else
     # PD: x <= A c, |y| <= H c, with H and A from the kink (5 horizons at up to 61 degrees
     # plus 2 horizons of margin); overlaps of W = 2 cells.
@@ -95,7 +120,7 @@ subsection Time
   set End time  = $end
 end
 subsection Postprocess
-  set List of postprocessors = energies, cracks
+  set List of postprocessors = energies, cracks, zone sizes
   subsection cracks
     set Initial tip = 0, 0
   end
@@ -148,6 +173,11 @@ for group in $groups; do
         run "pd_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 0
         run "coupled8_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 1
       done ;;
+    adaptive)
+      # The m = 6 kinks of m6_coupled_angles with a PD zone that grows from the crack.
+      for psi in 26.565 63.435; do
+        run "adaptive8_strain_${psi}_n256_m6" strain "$psi" $tc 256 6 32 2
+      done ;;
     bond_energy)
       # The "critical bond energy" criterion: mode I at m = 3, 6, 8 and three phase angles
       # at m = 6 (crack_energy_table.sh compares the mode-I runs with the critical stretch).
@@ -164,7 +194,7 @@ for group in $groups; do
   esac
 done
 # Every run is a directory (names may hold a decimal point).
-runs=$(ls -d pd_*/ coupled*/ 2> /dev/null | sed 's|/$||' | grep -v '_energy$' | sort -u)
+runs=$(ls -d pd_*/ coupled*/ adaptive*/ 2> /dev/null | sed 's|/$||' | grep -v '_energy$' | sort -u)
 "$here/mixed_mode_table.sh" $runs
 energy_runs=$(ls -d pd_*_energy/ 2> /dev/null | sed 's|/$||' | sort -u)
 if [ -n "$energy_runs" ]; then

@@ -35,9 +35,15 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
       if (!pd.is_slave(i) && pd.blending_weights()[i] > 0)
         overlap_particles.push_back(i);
+    // The overlap is given by boxes or, as a band around the PD region, by its width.
+    const bool        band = parameters.overlap_width > 0;
+    const std::string overlap_parameter =
+      band ? "Coupling/Overlap width" : "Coupling/Overlap region";
+    const std::string overlap_value =
+      band ? std::to_string(parameters.overlap_width) : parameters.overlap_text;
     if (Utilities::MPI::sum(overlap_particles.size(), communicator) == 0)
-      throw_invalid_parameter("Coupling/Overlap region",
-                              parameters.overlap_text,
+      throw_invalid_parameter(overlap_parameter,
+                              overlap_value,
                               "an overlap that holds PD nodes (lattice sites with 0 < alpha < "
                               "1): widen it or refine Peridynamics/Lattice spacing");
     overlap.reinit(fe, pd, overlap_particles);
@@ -64,9 +70,7 @@ namespace PeriArlequin
     space->initialize_vector(lambda);
     space->initialize_vector(rhs);
     if (lambda.size() == 0)
-      throw_invalid_parameter("Coupling/Overlap region",
-                              parameters.overlap_text,
-                              "an overlap that holds FE nodes");
+      throw_invalid_parameter(overlap_parameter, overlap_value, "an overlap that holds FE nodes");
     solver = std::make_unique<MultiplierSolver<dim>>(
       *space, overlap, fe_inverse_mass, pd_inverse_mass, dt, parameters.multiplier_solver);
     damping.reset();

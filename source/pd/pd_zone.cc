@@ -104,6 +104,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  const Region<dim> &
+  PDZone<dim>::get_region() const
+  {
+    return region;
+  }
+
+  template <int dim>
   void
   PDZone<dim>::setup(const ProblemData<dim> &data, const double dt)
   {

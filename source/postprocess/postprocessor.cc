@@ -1,6 +1,10 @@
 #include <periarlequin/postprocess/postprocessor.h>
 #include <periarlequin/simulator.h>
 
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
 namespace PeriArlequin
 {
   template <int dim>
@@ -121,6 +125,23 @@ namespace PeriArlequin
     history.add_value("fe_dofs", simulator.has_fe_zone() ? simulator.get_fe_zone().n_dofs() : 0);
     history.add_value("converted_cells", simulator.n_converted_cells());
     history.add_value("conversion_energy", simulator.conversion_energy_change());
+
+    const auto        &output   = simulator.get_output_parameters();
+    const unsigned int step     = simulator.get_step_number();
+    const bool         due      = output.output_interval > 0 &&
+                     (step % output.output_interval == 0 || step == simulator.get_n_steps());
+    if (!pd || !due || Utilities::MPI::this_mpi_process(pd->get_communicator()) != 0)
+      return;
+    std::ostringstream name;
+    name << output.directory << "/" << output.base_name << "_pd_region_" << std::setw(6)
+         << std::setfill('0') << step << ".csv";
+    std::ofstream file(name.str());
+    AssertThrow(file, ExcMessage("Cannot write " + name.str()));
+    file << "# t = " << std::setprecision(10) << simulator.get_time() << " s\n"
+         << (dim == 2 ? "x0,y0,x1,y1\n" : "x0,y0,z0,x1,y1,z1\n");
+    for (const Box<dim> &box : pd->get_region().boxes)
+      for (unsigned int k = 0; k < 2 * dim; ++k)
+        file << (k < dim ? box.lower[k] : box.upper[k - dim]) << (k + 1 < 2 * dim ? ',' : '\n');
   }
 
   template class Postprocessor<2>;

@@ -103,6 +103,10 @@ namespace PeriArlequin
     void
     set_region(const Region<dim> &grown);
 
+    /** The pure PD region now [m]. */
+    const Region<dim> &
+    get_region() const;
+
     /**
      * Particles, ghosts, bonds, pre-cracks, model, initial state (without accelerations:
      * the integrator computes them once the coupling has set the slaves). @p data must

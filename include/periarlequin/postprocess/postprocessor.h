@@ -119,7 +119,9 @@ namespace PeriArlequin
 
   /**
    * Size of the zones (an adaptive PD zone grows): PD particles, FE DoFs, cells converted to
-   * PD so far and the energy change the conversions caused [J].
+   * PD so far and the energy change the conversions caused [J]. At the output steps it
+   * writes the pure PD region as `<base>_pd_region_<step>.csv` (one box per line, lower and
+   * upper corner), which scripts/plot_zone.sh draws.
    */
   template <int dim>
   class ZoneSizes : public Postprocessor<dim>
