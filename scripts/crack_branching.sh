@@ -145,6 +145,18 @@ run coupled16_120_narrow 0.12 0.01 0.005 5
 # Adaptive: PD around the notch only (|y - 60| <= one cell), overlap band of 2 cells, FE cells
 # within 5 mm of damage become PD (checked every 20 steps, 0.5 us).
 run adaptive8_120 0.12 0.0025 0.0025 2 0.005
+# The same at FE/PD 16 (cells 5 mm, band 10 mm); at FE/PD 8 with damage distances of 3.75 and
+# 7.5 mm, and with a wider band (3 cells) at 3.75 mm.
+run adaptive16_120 0.12 0.005 0.005 2 0.005
+run adaptive8_120_d3.75 0.12 0.0025 0.0025 2 0.00375
+run adaptive8_120_d7.5 0.12 0.0025 0.0025 2 0.0075
+run adaptive8_120_band3 0.12 0.0025 0.0025 3 0.00375
 
-"$here/crack_branching_table.sh" pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120 \
-  coupled8_120_narrow coupled16_120_narrow adaptive8_120
+# The table of the runs made (all, or those asked for).
+made=()
+for name in pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120 coupled8_120_narrow \
+  coupled16_120_narrow adaptive8_120 adaptive16_120 adaptive8_120_d3.75 adaptive8_120_d7.5 \
+  adaptive8_120_band3; do
+  [ -f "$name.log" ] && made+=("$name")
+done
+"$here/crack_branching_table.sh" "${made[@]}"

@@ -194,9 +194,9 @@ for group in $groups; do
   esac
 done
 # Every run is a directory (names may hold a decimal point).
-runs=$(ls -d pd_*/ coupled*/ adaptive*/ 2> /dev/null | sed 's|/$||' | grep -v '_energy$' | sort -u)
+runs=$({ ls -d pd_*/ coupled*/ adaptive*/ 2> /dev/null || true; } | sed 's|/$||' | grep -v '_energy$' | sort -u)
 "$here/mixed_mode_table.sh" $runs
-energy_runs=$(ls -d pd_*_energy/ 2> /dev/null | sed 's|/$||' | sort -u)
+energy_runs=$({ ls -d pd_*_energy/ 2> /dev/null || true; } | sed 's|/$||' | sort -u)
 if [ -n "$energy_runs" ]; then
   "$here/mixed_mode_table.sh" $energy_runs
   "$here/crack_energy_table.sh" pd_strain_0 pd_strain_0_n128_m6 pd_strain_0_n128_m8 \
