@@ -67,6 +67,14 @@ namespace PeriArlequin
                       "10",
                       Patterns::Integer(1),
                       "Ask the criterion every this many steps [-].");
+    prm.declare_entry("Load imbalance tolerance",
+                      "0.1",
+                      Patterns::Double(0),
+                      "After a conversion on several ranks, repartition the cells (with the "
+                      "weights of the initial partition: particles times family size, plus a "
+                      "share per cell) when the most loaded rank carries more than (1 + this) "
+                      "times the mean load; particles, broken bonds and the FE field follow "
+                      "their cells. 0: after every conversion [-].");
     ConversionCriterionRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
@@ -106,6 +114,7 @@ namespace PeriArlequin
     prm.enter_subsection("Adaptive PD zone");
     const std::string conversion = prm.get("Conversion criterion");
     conversion_interval          = prm.get_integer("Check interval");
+    imbalance_tolerance          = prm.get_double("Load imbalance tolerance");
     if (conversion != "none")
       {
         if (!coupling_parameters.coupled() || !(coupling_parameters.overlap_width > 0))
@@ -379,10 +388,7 @@ namespace PeriArlequin
 
     fe_zone->restrict_to(
       [this](const auto &cell) { return !pd_zone->contains_cell(cell); });
-    if (contact)
-      contact->initialize(*fe_zone);
-    coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
-    integrator->initialize();
+    reinitialize_coupled_step();
 
     // The lumped FE masses and the particle masses integrate the blending weight with
     // different quadratures, so the mass that left the FE nodes differs slightly from the
@@ -420,7 +426,60 @@ namespace PeriArlequin
       pcout << "  step " << get_step_number() << ": " << boxes.size()
             << " FE cells became PD; now " << pd_zone->n_global_particles() << " particles, "
             << fe_zone->n_dofs() << " FE DoFs" << std::endl;
+    rebalance(imbalance_tolerance);
     return boxes.size();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::reinitialize_coupled_step()
+  {
+    if (contact)
+      contact->initialize(*fe_zone);
+    coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
+    integrator->initialize();
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::load_imbalance() const
+  {
+    AssertThrow(pd_zone, ExcMessage("The load of a rank is measured with PD cell weights."));
+    std::uint64_t local = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        local += pd_zone->cell_weight(cell);
+    const std::uint64_t largest = Utilities::MPI::max(local, communicator);
+    const std::uint64_t total   = Utilities::MPI::sum(local, communicator);
+    return static_cast<double>(largest) * Utilities::MPI::n_mpi_processes(communicator) /
+             static_cast<double>(total) -
+           1.;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::rebalance(const double tolerance)
+  {
+    AssertThrow(setup_done && pd_zone && fe_zone && coupling,
+                ExcMessage("Simulator::rebalance() needs a coupled case after setup()."));
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1 || load_imbalance() <= tolerance)
+      return false;
+    TimerOutput::Scope scope(timer, "repartition");
+    fe_zone->prepare_for_repartition();
+    pd_zone->prepare_for_repartition();
+    triangulation.repartition();
+    fe_zone->unpack_after_repartition();
+    pd_zone->unpack_after_repartition();
+    reinitialize_coupled_step();
+    ++repartitions;
+    return true;
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::n_repartitions() const
+  {
+    return repartitions;
   }
 
   template <int dim>

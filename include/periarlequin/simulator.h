@@ -75,10 +75,28 @@ namespace PeriArlequin
      * acceleration interpolated from the FE field; the FE zone drops the DoFs of the
      * converted cells, keeping its field elsewhere; the coupling is rebuilt and the
      * accelerations recomputed. Existing particles keep their state and broken bonds.
+     * Then rebalance() with Adaptive PD zone/Load imbalance tolerance.
      * Returns the number of cells converted (over all ranks).
      */
     unsigned int
     grow_pd_zone();
+
+    /**
+     * Repartition the cells with the weights of the initial partition when the most loaded
+     * rank's load exceeds the mean by more than the fraction @p tolerance (grow_pd_zone()
+     * asks with Adaptive PD zone/Load imbalance tolerance): particles with their state and
+     * broken bonds, and the FE field, follow their cells; the coupling is rebuilt. The state
+     * is unchanged, so the run goes on as without it, up to the order of sums. Returns
+     * whether it repartitioned; on one rank it never does. Needs a coupled case.
+     */
+    bool
+    rebalance(const double tolerance);
+    /** Largest load of a rank over the mean load, minus one [-]. */
+    double
+    load_imbalance() const;
+    /** Repartitions done by rebalance() since the start. */
+    unsigned int
+    n_repartitions() const;
 
     /** Cells converted to PD since the start, over all ranks. */
     unsigned int
@@ -144,6 +162,12 @@ namespace PeriArlequin
   private:
     void
     setup_fe_zone();
+    /**
+     * After the zones changed between steps: contact and coupling built again and the
+     * integrator's accelerations recomputed (the same for the same state).
+     */
+    void
+    reinitialize_coupled_step();
     /** Output directory, energy history file and FE output writer. */
     void
     prepare_output();
@@ -193,6 +217,7 @@ namespace PeriArlequin
     /** Adaptive PD zone: the criterion (nullptr: fixed zone) and how often it is asked. */
     std::unique_ptr<ConversionCriterion<dim>> conversion_criterion;
     unsigned int                              conversion_interval = 0;
+    double                                    imbalance_tolerance = 0.1;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>            energy_history;
     std::unique_ptr<PredictorCorrector<dim>>  integrator;
@@ -201,6 +226,7 @@ namespace PeriArlequin
 
     unsigned int n_steps            = 0;
     unsigned int converted_cells    = 0;
+    unsigned int repartitions       = 0;
     double       conversion_energy  = 0.;
     double       stable_time_step   = 0.;
     bool         setup_done         = false;

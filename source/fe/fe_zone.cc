@@ -44,16 +44,17 @@ namespace PeriArlequin
   {
     mass_weight      = mass_weight_function;
     stiffness_weight = stiffness_weight_function;
-    distribute_and_assemble(in_fe_zone);
+    fe_cells         = in_fe_zone;
+    distribute_and_assemble();
   }
 
   template <int dim>
   void
-  FEZone<dim>::distribute_and_assemble(const CellPredicate &in_fe_zone)
+  FEZone<dim>::distribute_and_assemble()
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(in_fe_zone(cell) ? 0 : 1);
+        cell->set_active_fe_index(fe_cells(cell) ? 0 : 1);
     dof_handler.distribute_dofs(fe_collection);
     locally_owned_dofs    = dof_handler.locally_owned_dofs();
     locally_relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
@@ -75,17 +76,21 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::vector<typename FEZone<dim>::VectorType *>
+  FEZone<dim>::carried_vectors()
+  {
+    return {&state.displacement, &state.velocity, &state.acceleration, &applied_force};
+  }
+
+  template <int dim>
   void
   FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone)
   {
     // The DoF indices, before and after, of the owned cells that stay FE: every owned DoF
     // after the change lies on one of them, and every DoF of theirs was locally relevant
     // before, so the old ghosted vectors hold the values to keep.
-    std::vector<VectorType *> kept = {&state.displacement,
-                                      &state.velocity,
-                                      &state.acceleration,
-                                      &applied_force};
-    const std::vector<VectorType> old_values = [&] {
+    const std::vector<VectorType *> kept       = carried_vectors();
+    const std::vector<VectorType>   old_values = [&] {
       std::vector<VectorType> copies;
       for (VectorType *v : kept)
         {
@@ -103,7 +108,8 @@ namespace PeriArlequin
           cell->get_dof_indices(old_indices[cell->active_cell_index()]);
         }
 
-    distribute_and_assemble(in_fe_zone);
+    fe_cells = in_fe_zone;
+    distribute_and_assemble();
 
     for (VectorType *v : kept)
       initialize_vector(*v);
@@ -121,6 +127,43 @@ namespace PeriArlequin
               for (unsigned int k = 0; k < kept.size(); ++k)
                 (*kept[k])(new_indices[i]) = old_values[k](old[i]);
         }
+    reset_after_dof_change();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::prepare_for_repartition()
+  {
+    std::vector<const VectorType *> carried;
+    for (VectorType *v : carried_vectors())
+      {
+        v->update_ghost_values();
+        carried.push_back(v);
+      }
+    solution_transfer =
+      std::make_unique<parallel::distributed::SolutionTransfer<dim, VectorType>>(
+        dof_handler);
+    solution_transfer->prepare_for_coarsening_and_refinement(carried);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::unpack_after_repartition()
+  {
+    Assert(solution_transfer, ExcMessage("Call prepare_for_repartition() first."));
+    distribute_and_assemble();
+    std::vector<VectorType *> carried = carried_vectors();
+    for (VectorType *v : carried)
+      initialize_vector(*v);
+    solution_transfer->interpolate(carried);
+    solution_transfer.reset();
+    reset_after_dof_change();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::reset_after_dof_change()
+  {
     for (VectorType *v : {&internal_force,
                           &previous_applied_force,
                           &previous_displacement,

@@ -125,6 +125,8 @@ namespace PeriArlequin
     history.add_value("fe_dofs", simulator.has_fe_zone() ? simulator.get_fe_zone().n_dofs() : 0);
     history.add_value("converted_cells", simulator.n_converted_cells());
     history.add_value("conversion_energy", simulator.conversion_energy_change());
+    history.add_value("repartitions", simulator.n_repartitions());
+    history.add_value("load_imbalance", pd ? simulator.load_imbalance() : 0.);
 
     const auto        &output   = simulator.get_output_parameters();
     const unsigned int step     = simulator.get_step_number();
@@ -184,7 +186,8 @@ namespace PeriArlequin
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ZoneSizes,
     "zone sizes",
-    "PD particles, FE DoFs, cells converted to PD and the energy change of the conversions")
+    "PD particles, FE DoFs, cells converted to PD, the energy change of the conversions, "
+    "repartitions and the load imbalance (largest rank load over the mean, minus one)")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(
     ConstraintResiduals,
     "constraint residuals",

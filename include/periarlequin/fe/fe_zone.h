@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping_q.h>
@@ -17,6 +18,7 @@
 #include <periarlequin/time/integrated_zone.h>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace PeriArlequin
@@ -85,6 +87,20 @@ namespace PeriArlequin
      */
     void
     restrict_to(const CellPredicate &in_fe_zone);
+
+    /**
+     * Before Triangulation::repartition(): attach the displacement, velocity, acceleration and
+     * applied force to their cells (a solution transfer), to follow them to their new owners.
+     */
+    void
+    prepare_for_repartition();
+    /**
+     * After Triangulation::repartition(): DoFs, mass and stiffness on the new partition and
+     * the state received; as after restrict_to(), nodal force weights, hooks and contact must
+     * be set again by their owners.
+     */
+    void
+    unpack_after_repartition();
 
     /**
      * Initial displacement and velocity from the problem's initial data at t = 0, and the
@@ -209,9 +225,18 @@ namespace PeriArlequin
     n_dofs() const;
 
   private:
-    /** FE indices from @p in_fe_zone, DoFs, matrix and vector layouts, mass and stiffness. */
+    /** FE indices from fe_cells, DoFs, matrix and vector layouts, mass and stiffness. */
     void
-    distribute_and_assemble(const CellPredicate &in_fe_zone);
+    distribute_and_assemble();
+    /** The vectors a change of the FE cells or of their owners keeps. */
+    std::vector<VectorType *>
+    carried_vectors();
+    /**
+     * After the DoFs changed and carried_vectors() were filled: the other vectors laid out
+     * anew, ghosts updated, prescribed DoFs found again, nodal force weights dropped.
+     */
+    void
+    reset_after_dof_change();
     void
     assemble_mass_and_stiffness();
 
@@ -230,6 +255,10 @@ namespace PeriArlequin
     /** The vector component of each owned DoF, in local order. */
     std::vector<unsigned char>                       owned_dof_component;
     WeightFunction                                   mass_weight, stiffness_weight;
+    /** The cells that carry FE_Q (the others carry FE_Nothing). */
+    CellPredicate                                    fe_cells;
+    std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
+      solution_transfer;
 
     const ProblemData<dim>                          *problem_data = nullptr;
     double                                           time_step    = 0;

@@ -275,6 +275,21 @@ namespace PeriArlequin
     std::vector<unsigned int>
     extend(const SiteFilter &additional_sites);
 
+    /**
+     * Before Triangulation::repartition(): attach the particles and the state they carry
+     * (displacement, velocity, acceleration, applied force and the ids of the particles at
+     * the far end of their broken bonds) to their cells, to follow them to their new owners.
+     */
+    void
+    prepare_for_repartition();
+    /**
+     * After Triangulation::repartition(): receive the particles and their state, and rebuild
+     * ghosts, bonds, weights, model and prescribed particles as setup() builds them. The
+     * particle set and every particle's state are those before the repartition.
+     */
+    void
+    unpack_after_repartition();
+
   private:
     /**
      * Insert a particle at every site of a locally owned cell that @p accept takes, given
@@ -355,6 +370,8 @@ namespace PeriArlequin
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
+    /** Handle of the particle state attached to the cells during a repartition. */
+    unsigned int state_handle = numbers::invalid_unsigned_int;
     /** Scratch of load_density(), called per particle and step: no allocation there. */
     mutable Vector<double> load_value = Vector<double>(dim);
     /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
