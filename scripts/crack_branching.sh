@@ -9,7 +9,9 @@
 # the 100 x 120 mm plate, and with an adaptive PD zone that starts around the notch and grows
 # with the crack (doc/adaptive_zone.md), then prints the table and draws the figures:
 #   scripts/crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]
-# <runs>: a space-separated list of run names to make (default: all).
+# <runs>: a space-separated list of run names to make (default: all). The adaptive runs
+# repartition on several ranks as 'Adaptive PD zone/Load imbalance tolerance' says, 0.1 or
+# the environment's LOAD_IMBALANCE_TOLERANCE.
 # Figures (scripts/plot_cracks.sh) and the table go to <work directory>; takes some minutes.
 set -euo pipefail
 usage="usage: crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]"
@@ -67,6 +69,7 @@ end
 subsection Adaptive PD zone
   set Conversion criterion = damage distance
   set Check interval       = 20
+  set Load imbalance tolerance = ${LOAD_IMBALANCE_TOLERANCE:-0.1}
   subsection damage distance
     set Distance = $distance
   end

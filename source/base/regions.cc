@@ -95,7 +95,11 @@ namespace PeriArlequin
   {
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto &box : boxes)
-      nearest = std::min(nearest, box.distance(p));
+      {
+        nearest = std::min(nearest, box.distance(p));
+        if (nearest == 0)
+          break;
+      }
     return nearest;
   }
 

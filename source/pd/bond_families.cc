@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 namespace PeriArlequin
 {
@@ -193,10 +194,23 @@ namespace PeriArlequin
   BondFamilies<dim>::break_bonds(const std::set<IdPair>               &broken_pairs,
                                  ArrayView<const types::particle_index> ids)
   {
+    // Per broken pair, the families of its owned ends: a few lookups per pair instead of one
+    // per stored bond.
+    std::unordered_map<types::particle_index, unsigned int> owned_index;
+    owned_index.reserve(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-        if (broken_pairs.count(std::minmax(ids[i], ids[neighbor[n]])))
-          state[n] = broken;
+      owned_index.emplace(ids[i], i);
+    for (const auto &pair : broken_pairs)
+      for (const auto &[end, other] : {pair, std::make_pair(pair.second, pair.first)})
+        {
+          const auto found = owned_index.find(end);
+          if (found == owned_index.end())
+            continue;
+          const unsigned int i = found->second;
+          for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+            if (ids[neighbor[n]] == other)
+              state[n] = broken;
+        }
   }
 
   template class BondFamilies<2>;

@@ -326,7 +326,7 @@ namespace PeriArlequin
 
   template <int dim>
   std::vector<unsigned int>
-  PDZone<dim>::extend(const SiteFilter &additional_sites)
+  PDZone<dim>::extend(const SiteFilter &grown_extent)
   {
     // What the rebuild must keep, by particle id: kinematics, applied forces (the next step's
     // work increment starts from them) and the bonds broken so far.
@@ -339,12 +339,11 @@ namespace PeriArlequin
     const std::vector<Tensor<1, dim>>   old_applied_force = applied_force;
     const auto broken = bonds.broken_bonds(old_ids);
 
-    const SiteFilter old_extent = extent;
-    extent = [old_extent, additional_sites](const Point<dim> &x) {
-      return old_extent(x) || additional_sites(x);
-    };
+    for ([[maybe_unused]] const Point<dim> &x : ghosts.reference_positions())
+      Assert(grown_extent(x), ExcMessage("PDZone::extend(): the extent must only grow."));
+    extent = grown_extent;
     insert_particles([&](const Point<dim> &x, const types::particle_index id) {
-      return additional_sites(x) && old_index.count(id) == 0;
+      return old_index.count(id) == 0 && extent(x);
     });
     build_particle_structures();
 

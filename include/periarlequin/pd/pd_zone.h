@@ -264,16 +264,16 @@ namespace PeriArlequin
 
     /**
      * Add particles between steps at the lattice sites of locally owned cells that
-     * @p additional_sites accepts and that hold none yet; the zone's extent becomes the
-     * union (an extent that grows by itself, as that of an adaptive zone, may be passed as
-     * @p additional_sites). Existing particles keep their kinematics and their broken bonds; ghosts,
+     * @p grown_extent accepts and that hold none yet; the zone's extent becomes
+     * @p grown_extent, which must accept every site that holds a particle (particles are
+     * never removed). Existing particles keep their kinematics and their broken bonds; ghosts,
      * bonds (with pre-cracks and no-fail regions), model constants, blending weights and
      * prescribed particles are rebuilt as set-up builds them. The new particles start at
      * rest and undeformed; returns their local numbers, for the caller to set their state.
-     * The cells and their owners must not have changed since setup().
+     * A repartition in between must have been completed by unpack_after_repartition().
      */
     std::vector<unsigned int>
-    extend(const SiteFilter &additional_sites);
+    extend(const SiteFilter &grown_extent);
 
     /**
      * Before Triangulation::repartition(): attach the particles and the state they carry
