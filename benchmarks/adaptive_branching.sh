@@ -11,6 +11,9 @@
 # fixed strip / adaptive measured side by side, then their medians; the PD particles at the
 # end against the pure-PD count, and the share of the adaptive run's loop spent converting
 # cells (TimerOutput section "PD zone growth": the criterion's checks and the conversions).
+# Then the adaptive run on 2 ranks, side by side with and without repartitioning after the
+# conversions (Load imbalance tolerance 0.1 against 1e9): loop times, their ratio, the time
+# spent repartitioning, the load imbalance at the end, and the speed-up over 1 rank.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$(cd "${1:-$top/build}" && pwd)
@@ -51,3 +54,25 @@ printf "adaptive:     %7d particles at the end, loop %7.1f s, of which %.1f s (%
 printf "pure PD / adaptive: %.2f; fixed strip / adaptive: %.2f (medians of the ratios of each repeat)\n" \
   "$(ratio 1 3)" "$(ratio 2 3)"
 printf "particles at the end, adaptive / pure PD: %.3f\n" "$(awk -v a="$n_adaptive" -v b="$n_pd" 'BEGIN {print a / b}')"
+
+echo
+echo "adaptive, 2 ranks: repartitioned after conversions (tolerance 0.1) / not (1e9)"
+for r in $(seq "$repeats"); do
+  for tol in 0.1 1e9; do
+    LOAD_IMBALANCE_TOLERANCE=$tol bash "$top/scripts/crack_branching.sh" "$build" "$work/np2_${tol}_$r" 2 \
+      adaptive8_120 > /dev/null 2>&1 || true
+  done
+  t_on=$(loop_time "$work/np2_0.1_$r/adaptive8_120.log")
+  t_off=$(loop_time "$work/np2_1e9_$r/adaptive8_120.log")
+  t_re=$(section "$work/np2_0.1_$r/adaptive8_120.log" "repartition")
+  i_on=$(last_column "$work/np2_0.1_$r/adaptive8_120/solution_energy.csv" load_imbalance)
+  i_off=$(last_column "$work/np2_1e9_$r/adaptive8_120/solution_energy.csv" load_imbalance)
+  n_re=$(last_column "$work/np2_0.1_$r/adaptive8_120/solution_energy.csv" repartitions)
+  echo "${t_on:-nan} ${t_off:-nan} ${t_re:-0}" >> "$work/times2"
+  awk -v a="$t_on" -v b="$t_off" -v t="$t_re" -v n="$n_re" -v i="$i_on" -v j="$i_off" -v r="$r" 'BEGIN {
+    printf "repeat %d: repartitioned %.1f s (%d repartitions, %.2f s; imbalance at the end %.3f), not %.1f s (imbalance %.3f); not / repartitioned %.2f\n", r, a, n, t, i, b, j, b / a }'
+done
+col2() { cut -d' ' -f"$1" "$work/times2" | median; }
+printf "medians: repartitioned %.1f s, not %.1f s, not / repartitioned %.2f; 1 rank / 2 ranks repartitioned %.2f\n" \
+  "$(col2 1)" "$(col2 2)" "$(awk '{print $2 / $1}' "$work/times2" | median)" \
+  "$(awk -v t="$(col 3)" -v u="$(col2 1)" 'BEGIN {print t / u}')"

@@ -4,6 +4,12 @@
 #include <deal.II/base/function.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <cmath>
 #include <algorithm>
 #include <filesystem>
@@ -17,6 +23,40 @@
 namespace PeriArlequin
 {
   template <int dim>
+  struct Simulator<dim>::CheckpointRecord
+  {
+    std::string              format    = "PeriArlequin checkpoint 1";
+    unsigned int             dimension = dim;
+    std::vector<std::string> parameters;
+    unsigned int             n_ranks = 0;
+    unsigned int             step    = 0;
+    /** The pure PD region, per box its lower then its upper corner [m]. */
+    std::vector<double>      pd_region;
+    unsigned int             converted_cells = 0, repartitions = 0;
+    double                   conversion_energy = 0, fe_work = 0;
+    /** Each rank's share of the PD zone's external work [J]. */
+    std::vector<double>      pd_work;
+    std::vector<std::string> history_names;
+    std::vector<std::vector<double>>            history_rows;
+    std::vector<std::pair<double, std::string>> fe_records, pd_records;
+    std::vector<std::string>                    postprocessor_states;
+    /** The other files of the checkpoint (the mesh and its cell data) and their checksums. */
+    std::vector<std::pair<std::string, std::uint64_t>> files;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &format &dimension &parameters &n_ranks &step &pd_region &converted_cells
+        &repartitions &conversion_energy &fe_work &pd_work &history_names &history_rows
+          &fe_records &pd_records &postprocessor_states &files;
+    }
+  };
+
+  template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+  template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -29,6 +69,7 @@ namespace PeriArlequin
     Parameters::FiniteElements::declare_parameters(prm);
     Parameters::Time::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);
+    Parameters::Checkpoint::declare_parameters(prm);
     Parameters::Peridynamics<dim>::declare_parameters(prm);
     Parameters::Coupling::declare_parameters(prm);
     ProblemData<dim>::declare_parameters(prm);
@@ -94,6 +135,8 @@ namespace PeriArlequin
     fe_parameters.parse_parameters(prm);
     time_parameters.parse_parameters(prm);
     output_parameters.parse_parameters(prm);
+    checkpoint_parameters.parse_parameters(prm);
+    physics_parameters = checkpointed_parameters(prm);
     pd_parameters.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
@@ -177,7 +220,29 @@ namespace PeriArlequin
         cells[d] = geometry.subdivisions[d];
       }
     GridGenerator::subdivided_hyper_rectangle(triangulation, cells, p1, p2, true);
-    triangulation.refine_global(geometry.global_refinements);
+    if (checkpoint_parameters.resume)
+      {
+        read_checkpoint();
+        triangulation.load(resume_directory + "mesh");
+        // The owner of each cell in the checkpointed run (the first data attached).
+        const unsigned int handle = triangulation.register_data_attach(
+          [](const typename Triangulation<dim>::cell_iterator &,
+             const typename Triangulation<dim>::CellStatus) {
+            return std::vector<char>(sizeof(unsigned int));
+          },
+          /*returns_variable_size_data=*/false);
+        saved_owner.assign(triangulation.n_active_cells(), 0);
+        triangulation.notify_ready_to_unpack(
+          handle,
+          [this](const typename Triangulation<dim>::cell_iterator &cell,
+                 const typename Triangulation<dim>::CellStatus,
+                 const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+            saved_owner[cell->active_cell_index()] =
+              Utilities::unpack<unsigned int>(data.begin(), data.end(), false);
+          });
+      }
+    else
+      triangulation.refine_global(geometry.global_refinements);
 
     if (!pd_parameters.region.empty())
       {
@@ -205,13 +270,34 @@ namespace PeriArlequin
           pd_zone->set_blending([this](const Point<dim> &x) { return blending->value(x); },
                                 coupling_parameters.blending == Parameters::Blending::energy,
                                 coupling_parameters.minimum_pd_weight);
-        // Balance particles x family size (and FE cells) across ranks before DoFs exist.
+        if (resumed)
+          {
+            Region<dim> region;
+            const auto &corners = resumed->pd_region;
+            for (unsigned int k = 0; k + 2 * dim <= corners.size(); k += 2 * dim)
+              {
+                Box<dim> box;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    box.lower[d] = corners[k + d];
+                    box.upper[d] = corners[k + dim + d];
+                  }
+                region.boxes.push_back(box);
+              }
+            if (blending && blending->is_band())
+              blending->set_pd_region(region);
+            pd_zone->set_region(region);
+          }
+        // Balance particles x family size (and FE cells) across ranks before DoFs exist (a
+        // checkpoint keeps its partition, rebalanced below on another number of ranks).
         triangulation.signals.weight.connect(
           [this](const typename Triangulation<dim>::cell_iterator &cell,
                  const typename Triangulation<dim>::CellStatus) {
-            return pd_zone->cell_weight(cell);
+            return partition_weights.empty() ? pd_zone->cell_weight(cell) :
+                                               partition_weights[cell->active_cell_index()];
           });
-        triangulation.repartition();
+        if (!resumed)
+          triangulation.repartition();
       }
     bool has_fe_cells = false;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -227,6 +313,11 @@ namespace PeriArlequin
         stable_time_step =
           fe_zone->estimate_stable_time_step(time_parameters.stability_iterations);
         fe_zone->initialize_state(problem_data, dt);
+        if (resumed)
+          {
+            fe_zone->deserialize();
+            fe_zone->set_external_work(resumed->fe_work);
+          }
         if (contact)
           {
             contact->initialize(*fe_zone);
@@ -240,7 +331,23 @@ namespace PeriArlequin
                               "FE cells");
     if (pd_zone)
       {
-        pd_zone->setup(problem_data, dt);
+        if (resumed)
+          {
+            pd_zone->setup_from_checkpoint(problem_data, dt);
+            const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+            // On another number of ranks the work so far is rank 0's.
+            const bool same_ranks =
+              resumed->pd_work.size() == Utilities::MPI::n_mpi_processes(communicator);
+            double share = 0;
+            if (same_ranks)
+              share = resumed->pd_work[rank];
+            else if (rank == 0)
+              for (const double w : resumed->pd_work)
+                share += w;
+            pd_zone->set_local_external_work(share);
+          }
+        else
+          pd_zone->setup(problem_data, dt);
         if (blending)
           coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
         if (conversion_criterion)
@@ -265,7 +372,22 @@ namespace PeriArlequin
       std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
     integrator = std::make_unique<PredictorCorrector<dim>>(
       zones, coupling.get(), dt, n_steps, timer);
-    integrator->initialize();
+    if (resumed)
+      {
+        integrator->resume_at(resumed->step);
+        converted_cells   = resumed->converted_cells;
+        conversion_energy = resumed->conversion_energy;
+        repartitions      = resumed->repartitions;
+        // load() cut the cells evenly by count: on as many ranks as the checkpointed run,
+        // its partition again (so the run goes on bit for bit), on another number, the
+        // balance of the cell weights.
+        if (pd_zone && resumed->n_ranks == Utilities::MPI::n_mpi_processes(communicator))
+          restore_saved_partition();
+        else if (pd_zone)
+          rebalance(0.);
+      }
+    else
+      integrator->initialize();
 
     pcout << "PeriArlequin " << dim << "D"
           << (dim == 2 ? (material.planar_model == Parameters::PlanarModel::plane_stress ?
@@ -299,6 +421,10 @@ namespace PeriArlequin
                    "as far as the FE field does (tests/coupling/overlap_stretch)."
                 << std::endl;
       }
+    if (resumed)
+      pcout << "  resumed from " << resume_directory << " at step " << resumed->step
+            << ", t = " << integrator->get_time().get_current_time() << " s (written on "
+            << resumed->n_ranks << " rank(s))" << std::endl;
     setup_done = true;
   }
 
@@ -388,7 +514,8 @@ namespace PeriArlequin
 
     fe_zone->restrict_to(
       [this](const auto &cell) { return !pd_zone->contains_cell(cell); });
-    reinitialize_coupled_step();
+    rebuild_coupling();
+    integrator->initialize();
 
     // The lumped FE masses and the particle masses integrate the blending weight with
     // different quadratures, so the mass that left the FE nodes differs slightly from the
@@ -432,12 +559,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  Simulator<dim>::reinitialize_coupled_step()
+  Simulator<dim>::rebuild_coupling()
   {
     if (contact)
       contact->initialize(*fe_zone);
-    coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
-    integrator->initialize();
+    if (coupling)
+      coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
   }
 
   template <int dim>
@@ -460,19 +587,61 @@ namespace PeriArlequin
   bool
   Simulator<dim>::rebalance(const double tolerance)
   {
-    AssertThrow(setup_done && pd_zone && fe_zone && coupling,
-                ExcMessage("Simulator::rebalance() needs a coupled case after setup()."));
+    AssertThrow(pd_zone, ExcMessage("Simulator::rebalance() needs a PD zone."));
     if (Utilities::MPI::n_mpi_processes(communicator) == 1 || load_imbalance() <= tolerance)
       return false;
-    TimerOutput::Scope scope(timer, "repartition");
-    fe_zone->prepare_for_repartition();
-    pd_zone->prepare_for_repartition();
-    triangulation.repartition();
-    fe_zone->unpack_after_repartition();
-    pd_zone->unpack_after_repartition();
-    reinitialize_coupled_step();
+    repartition_zones();
     ++repartitions;
     return true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::repartition_zones()
+  {
+    TimerOutput::Scope scope(timer, "repartition");
+    if (fe_zone)
+      fe_zone->prepare_for_repartition();
+    pd_zone->prepare_for_repartition();
+    triangulation.repartition();
+    if (fe_zone)
+      fe_zone->unpack_after_repartition();
+    pd_zone->unpack_after_repartition();
+    // The state moved unchanged (with the accelerations the coupling corrected), so the
+    // integrator is not initialized again.
+    rebuild_coupling();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_saved_partition()
+  {
+    // Cell weights under which p4est cuts the curve of cells exactly where the checkpointed
+    // run owned them: each saved rank's cells weigh S in all (S = the largest saved count;
+    // q = S / n per cell and one more for the first S mod n of them), so every cut falls on
+    // a block boundary, whichever side of it p4est gives a cell on the cut.
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    std::vector<std::uint64_t> local_count(n_ranks, 0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        ++local_count[saved_owner[cell->active_cell_index()]];
+    std::vector<std::uint64_t> count(n_ranks, 0), before(n_ranks, 0);
+    MPI_Allreduce(local_count.data(), count.data(), n_ranks, MPI_UINT64_T, MPI_SUM, communicator);
+    MPI_Exscan(local_count.data(), before.data(), n_ranks, MPI_UINT64_T, MPI_SUM, communicator);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::fill(before.begin(), before.end(), 0);
+    const std::uint64_t block = *std::max_element(count.begin(), count.end());
+    partition_weights.assign(triangulation.n_active_cells(), 0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int owner = saved_owner[cell->active_cell_index()];
+          partition_weights[cell->active_cell_index()] =
+            block / count[owner] + (before[owner]++ < block % count[owner] ? 1 : 0);
+        }
+    repartition_zones();
+    partition_weights.clear();
+    saved_owner.clear();
   }
 
   template <int dim>
@@ -591,11 +760,202 @@ namespace PeriArlequin
     // Energies may not be recorded: make sure the state is finite when progress is shown.
     check_finite(kinetic_energy());
     const unsigned int n = get_step_number();
-    const double remaining = n > 0 ? wall * (n_steps - n) / n : 0.;
+    const double remaining = n > first_step ? wall * (n_steps - n) / (n - first_step) : 0.;
     pcout << "  step " << n << "/" << n_steps << ", t = " << std::setprecision(4)
           << std::scientific << get_time() << " s, wall " << std::fixed << std::setprecision(1)
           << wall << " s, about " << remaining << " s to go" << std::defaultfloat
           << std::setprecision(6) << std::endl;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::checkpoint_due()
+  {
+    const unsigned int interval = checkpoint_parameters.interval;
+    if (interval > 0 && get_step_number() % interval == 0)
+      return true;
+    if (checkpoint_parameters.wall_time_interval > 0)
+      {
+        // Rank 0's clock decides, so that every rank writes.
+        const double wall = Utilities::MPI::broadcast(communicator, wall_clock.wall_time(), 0);
+        return wall - last_checkpoint_wall_time >= checkpoint_parameters.wall_time_interval;
+      }
+    return false;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope scope(timer, "checkpoint");
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::filesystem::create_directories(output_parameters.directory);
+    CheckpointSlots    slots(output_parameters.directory, output_parameters.base_name, communicator);
+    const std::string  slot = slots.begin_writing();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+    triangulation.register_data_attach(
+      [rank](const typename Triangulation<dim>::cell_iterator &,
+             const typename Triangulation<dim>::CellStatus) {
+        return Utilities::pack(rank, false);
+      },
+      /*returns_variable_size_data=*/false);
+    if (fe_zone)
+      fe_zone->prepare_for_serialization();
+    if (pd_zone)
+      pd_zone->prepare_for_serialization();
+    triangulation.save(slot + "mesh");
+
+    const std::vector<double> pd_work = Utilities::MPI::gather(
+      communicator, pd_zone ? pd_zone->local_external_work() : 0., 0);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        CheckpointRecord record;
+        record.parameters = physics_parameters;
+        record.n_ranks    = Utilities::MPI::n_mpi_processes(communicator);
+        record.step       = get_step_number();
+        if (pd_zone)
+          for (const Box<dim> &box : pd_zone->get_region().boxes)
+            for (unsigned int k = 0; k < 2 * dim; ++k)
+              record.pd_region.push_back(k < dim ? box.lower[k] : box.upper[k - dim]);
+        record.converted_cells   = converted_cells;
+        record.repartitions      = repartitions;
+        record.conversion_energy = conversion_energy;
+        record.fe_work           = fe_zone ? fe_zone->external_work() : 0.;
+        record.pd_work           = pd_work;
+        if (energy_history)
+          {
+            record.history_names = energy_history->column_names();
+            record.history_rows  = energy_history->rows();
+          }
+        if (fe_output)
+          record.fe_records = fe_output->get_series().get_records();
+        if (pd_output)
+          record.pd_records = pd_output->get_series().get_records();
+        for (const auto &postprocessor : postprocessors)
+          record.postprocessor_states.push_back(postprocessor->save_state());
+        record.files = file_checksums(slot, "state");
+
+        std::ostringstream bytes;
+        {
+          boost::archive::binary_oarchive archive(bytes);
+          archive << record;
+        }
+        const std::string payload = bytes.str();
+        std::ofstream     file(slot + "state", std::ios::binary);
+        const std::uint64_t header[2] = {payload.size(), checksum(payload)};
+        file.write(reinterpret_cast<const char *>(header), sizeof(header));
+        file.write(payload.data(), payload.size());
+        file.flush();
+        AssertThrow(file, ExcMessage("Cannot write the checkpoint record " + slot + "state"));
+      }
+    slots.commit();
+    pcout << "  step " << get_step_number() << ": checkpoint written to " << slot << std::endl;
+    last_checkpoint_wall_time = Utilities::MPI::broadcast(communicator, wall_clock.wall_time(), 0);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::read_checkpoint()
+  {
+    const CheckpointSlots slots(output_parameters.directory,
+                                output_parameters.base_name,
+                                communicator);
+    resume_directory = slots.newest();
+    const std::string file_name = resume_directory + "state";
+    const auto corrupt = [&](const std::string &what) {
+      AssertThrow(false,
+                  ExcMessage("Invalid input: parameter 'Checkpoint/Resume' = true, but the "
+                             "checkpoint " + resume_directory + " is corrupt (" + what +
+                             "); allowed: a checkpoint that a run wrote completely (delete "
+                             "this slot and its pointer to start afresh)."));
+    };
+    std::string payload;
+    bool        intact = false;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ifstream file(file_name, std::ios::binary);
+        std::uint64_t header[2] = {0, 0};
+        if (file.read(reinterpret_cast<char *>(header), sizeof(header)) &&
+            header[0] < (std::uint64_t(1) << 40))
+          {
+            payload.resize(header[0]);
+            intact = file.read(payload.data(), payload.size()) && checksum(payload) == header[1];
+          }
+      }
+    if (!Utilities::MPI::broadcast(communicator, intact, 0))
+      corrupt("its record " + file_name + " is missing, truncated, or fails its checksum");
+    payload = Utilities::MPI::broadcast(communicator, payload, 0);
+
+    resumed = std::make_unique<CheckpointRecord>();
+    const std::string format = resumed->format;
+    try
+      {
+        std::istringstream              bytes(payload);
+        boost::archive::binary_iarchive archive(bytes);
+        archive >> *resumed;
+      }
+    catch (const std::exception &error)
+      {
+        corrupt(error.what());
+      }
+    if (resumed->format != format || resumed->dimension != dim)
+      corrupt("written by another version or for another dimension");
+    // The mesh and cell-data files, against the checksums the record took after writing them.
+    std::string damaged_file;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        const auto found = file_checksums(resume_directory, "state");
+        for (const auto &[name, sum] : resumed->files)
+          {
+            const auto here = std::find_if(found.begin(), found.end(), [&](const auto &f) {
+              return f.first == name;
+            });
+            if (here == found.end() || here->second != sum)
+              {
+                damaged_file = name;
+                break;
+              }
+          }
+      }
+    damaged_file = Utilities::MPI::broadcast(communicator, damaged_file, 0);
+    if (!damaged_file.empty())
+      corrupt("its file " + damaged_file + " is missing or fails its checksum");
+    // The first parameter that differs, named with both values.
+    const auto &saved = resumed->parameters;
+    for (unsigned int k = 0; k < std::max(saved.size(), physics_parameters.size()); ++k)
+      {
+        const std::string was  = k < saved.size() ? saved[k] : "(absent)";
+        const std::string here = k < physics_parameters.size() ? physics_parameters[k] : "(absent)";
+        if (was != here)
+          AssertThrow(false,
+                      ExcMessage("Invalid input: parameter 'Checkpoint/Resume' = true, but "
+                                 "the checkpoint in " + resume_directory +
+                                 " was written with '" + was + "' where this run has '" +
+                                 here + "'; allowed: the parameters of the checkpointed run "
+                                 "(only the subsections Output and Checkpoint and Time/End "
+                                 "time may change)."));
+      }
+    AssertThrow(static_cast<std::uint64_t>(resumed->step) * time_parameters.time_step <=
+                  time_parameters.end_time * (1 + 1e-12),
+                ExcMessage("Invalid input: parameter 'Time/End time' = " +
+                           std::to_string(time_parameters.end_time) +
+                           "; allowed: not before the checkpoint's step " +
+                           std::to_string(resumed->step) + "."));
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_outputs()
+  {
+    energy_history->restore(resumed->history_names, resumed->history_rows);
+    if (fe_output)
+      fe_output->get_series().restore(resumed->fe_records);
+    if (pd_output)
+      pd_output->get_series().restore(resumed->pd_records);
+    AssertThrow(resumed->postprocessor_states.size() == postprocessors.size(),
+                ExcMessage("The checkpoint holds another number of postprocessors."));
+    for (unsigned int k = 0; k < postprocessors.size(); ++k)
+      postprocessors[k]->load_state(resumed->postprocessor_states[k]);
   }
 
   template <int dim>
@@ -609,12 +969,20 @@ namespace PeriArlequin
       return interval > 0 && (get_step_number() % interval == 0 || get_step_number() == n_steps);
     };
 
-    if (due(output_parameters.energy_interval))
-      record_statistics();
-    if (due(output_parameters.output_interval))
-      write_output();
+    if (resumed)
+      restore_outputs();
+    else
+      {
+        if (due(output_parameters.energy_interval))
+          record_statistics();
+        if (due(output_parameters.output_interval))
+          write_output();
+      }
 
     wall_clock.restart();
+    last_checkpoint_wall_time = 0;
+    first_step                = get_step_number();
+    bool checkpointed         = false;
     while (get_step_number() < n_steps)
       {
         advance();
@@ -622,16 +990,22 @@ namespace PeriArlequin
           record_statistics();
         if (due(output_parameters.output_interval))
           write_output();
+        checkpointed = checkpoint_due();
+        if (checkpointed)
+          write_checkpoint();
         report_progress(get_step_number() == n_steps);
       }
+    if (checkpoint_parameters.at_end && !checkpointed)
+      write_checkpoint();
     const double loop_time = wall_clock.wall_time();
     check_finite(kinetic_energy());
-    pcout << "Time loop: " << n_steps << " steps in " << loop_time << " s";
+    const unsigned int steps_run = n_steps - first_step;
+    pcout << "Time loop: " << steps_run << " steps in " << loop_time << " s";
     if (fe_zone)
-      pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * n_steps / loop_time
+      pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * steps_run / loop_time
             << " FE DoF-steps/s";
     if (pd_zone)
-      pcout << ", " << static_cast<double>(pd_zone->n_global_bonds()) * n_steps / loop_time
+      pcout << ", " << static_cast<double>(pd_zone->n_global_bonds()) * steps_run / loop_time
             << " PD bond-updates/s";
     pcout << std::endl;
     if (output_parameters.print_timing)

@@ -13,6 +13,7 @@
 #include <periarlequin/coupling/blending_field.h>
 #include <periarlequin/coupling/coupling.h>
 #include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/io/checkpoint.h>
 #include <periarlequin/io/energy_history.h>
 #include <periarlequin/io/fe_output.h>
 #include <periarlequin/io/line_samples.h>
@@ -48,6 +49,7 @@ namespace PeriArlequin
 
     /** Parse (and validate) a parameter handler filled by declare_parameters(). */
     Simulator(ParameterHandler &prm, const MPI_Comm communicator);
+    ~Simulator();
 
     /**
      * Mesh, zones, DoFs, matrices, coupling, initial state and every check that needs them
@@ -87,7 +89,7 @@ namespace PeriArlequin
      * asks with Adaptive PD zone/Load imbalance tolerance): particles with their state and
      * broken bonds, and the FE field, follow their cells; the coupling is rebuilt. The state
      * is unchanged, so the run goes on as without it, up to the order of sums. Returns
-     * whether it repartitioned; on one rank it never does. Needs a coupled case.
+     * whether it repartitioned; on one rank it never does. Needs a PD zone.
      */
     bool
     rebalance(const double tolerance);
@@ -97,6 +99,16 @@ namespace PeriArlequin
     /** Repartitions done by rebalance() since the start. */
     unsigned int
     n_repartitions() const;
+
+    /**
+     * Write a checkpoint of the current state (collective): the mesh with the FE field and
+     * the particles with their state and broken bonds attached to its cells, and, from rank
+     * 0, the clock, the PD region, the energy history, the .pvd records and the
+     * postprocessors' states, into the slot of CheckpointSlots that the last checkpoint did
+     * not use. run() calls it as the subsection Checkpoint says.
+     */
+    void
+    write_checkpoint();
 
     /** Cells converted to PD since the start, over all ranks. */
     unsigned int
@@ -162,12 +174,15 @@ namespace PeriArlequin
   private:
     void
     setup_fe_zone();
-    /**
-     * After the zones changed between steps: contact and coupling built again and the
-     * integrator's accelerations recomputed (the same for the same state).
-     */
+    /** Repartition with the cell weights: zones' state moved, coupling rebuilt. */
     void
-    reinitialize_coupled_step();
+    repartition_zones();
+    /** After resuming on as many ranks as the checkpoint: the cells back to their owners. */
+    void
+    restore_saved_partition();
+    /** After the zones or their partition changed: contact and coupling built again. */
+    void
+    rebuild_coupling();
     /** Output directory, energy history file and FE output writer. */
     void
     prepare_output();
@@ -182,6 +197,18 @@ namespace PeriArlequin
     kinetic_energy() const;
     void
     write_output();
+    /** Is a checkpoint due after this step (Checkpoint/Interval, Wall time interval)? */
+    bool
+    checkpoint_due();
+    /**
+     * Read, check and broadcast the newest checkpoint's record (Checkpoint/Resume); a clear
+     * error for a corrupt one or one written with other parameters.
+     */
+    void
+    read_checkpoint();
+    /** After prepare_output() of a resumed run: history, .pvd records, postprocessors. */
+    void
+    restore_outputs();
     void
     report_progress(const bool force);
 
@@ -195,6 +222,18 @@ namespace PeriArlequin
     Parameters::FiniteElements   fe_parameters;
     Parameters::Time             time_parameters;
     Parameters::Output           output_parameters;
+    Parameters::Checkpoint       checkpoint_parameters;
+    /** The parameters a checkpoint must agree with (checkpointed_parameters()). */
+    std::vector<std::string>     physics_parameters;
+    /** What a checkpoint holds besides the cell data; set while resuming from one. */
+    struct CheckpointRecord;
+    std::unique_ptr<CheckpointRecord> resumed;
+    std::string                  resume_directory;
+    double                       last_checkpoint_wall_time = 0.;
+    /** While resuming: each cell's owner in the checkpointed run (by active cell index). */
+    std::vector<unsigned int>    saved_owner;
+    /** Cell weights that replace the PD ones while not empty (restore_saved_partition()). */
+    std::vector<unsigned int>    partition_weights;
     Parameters::Peridynamics<dim> pd_parameters;
     Parameters::Coupling         coupling_parameters;
     ProblemData<dim>             problem_data;
@@ -232,6 +271,8 @@ namespace PeriArlequin
     bool         setup_done         = false;
     Timer        wall_clock;
     double       last_progress_time = 0.;
+    /** The step run() started from (0, or a checkpoint's step). */
+    unsigned int first_step         = 0;
   };
 } // namespace PeriArlequin
 

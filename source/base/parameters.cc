@@ -266,5 +266,45 @@ namespace PeriArlequin
     {
       ParameterEntries::parse(prm, "Output", *this);
     }
+
+    void
+    Checkpoint::entries(ParameterEntries &entries)
+    {
+      entries.add("Interval",
+                  interval,
+                  Patterns::Integer(0),
+                  "Write a checkpoint every this many steps (0: never) [steps]. Two are kept, "
+                  "in <Output/Directory>/<Output/Base name>_checkpoint_{0,1}; the file "
+                  "<base>_checkpoint.last names the newest complete one.");
+      entries.add("Wall time interval",
+                  wall_time_interval,
+                  Patterns::Double(0),
+                  "Also write one when this much wall-clock time has passed since the start "
+                  "or the last checkpoint (0: never) [s].");
+      entries.add("At end",
+                  at_end,
+                  Patterns::Bool(),
+                  "Write one after the last step (to continue later with a larger "
+                  "Time/End time).");
+      entries.add("Resume",
+                  resume,
+                  Patterns::Bool(),
+                  "Continue from the newest complete checkpoint of Output/Directory and "
+                  "Output/Base name, on any number of ranks. The other parameters must be "
+                  "those of the checkpointed run, except the subsections Output and "
+                  "Checkpoint and Time/End time.");
+    }
+
+    void
+    Checkpoint::declare_parameters(ParameterHandler &prm)
+    {
+      ParameterEntries::declare<Checkpoint>(prm, "Checkpoint");
+    }
+
+    void
+    Checkpoint::parse_parameters(ParameterHandler &prm)
+    {
+      ParameterEntries::parse(prm, "Checkpoint", *this);
+    }
   } // namespace Parameters
 } // namespace PeriArlequin

@@ -297,6 +297,14 @@ namespace PeriArlequin
     pure_pd.coalesce(length_tolerance);
   }
 
+  template <int dim>
+  void
+  BlendingField<dim>::set_pd_region(const Region<dim> &grown)
+  {
+    Assert(is_band(), ExcMessage("Only a band overlap follows a growing PD region."));
+    pure_pd = grown;
+  }
+
   template class BlendingField<2>;
   template class BlendingField<3>;
 } // namespace PeriArlequin

@@ -79,7 +79,13 @@ namespace PeriArlequin
   std::vector<typename FEZone<dim>::VectorType *>
   FEZone<dim>::carried_vectors()
   {
-    return {&state.displacement, &state.velocity, &state.acceleration, &applied_force};
+    // The internal force too, so that the strain energy of a step that repartitioned is that
+    // of its force pass.
+    return {&state.displacement,
+            &state.velocity,
+            &state.acceleration,
+            &applied_force,
+            &internal_force};
   }
 
   template <int dim>
@@ -131,8 +137,8 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  FEZone<dim>::prepare_for_repartition()
+  std::vector<const typename FEZone<dim>::VectorType *>
+  FEZone<dim>::ghosted_carried_vectors()
   {
     std::vector<const VectorType *> carried;
     for (VectorType *v : carried_vectors())
@@ -143,7 +149,43 @@ namespace PeriArlequin
     solution_transfer =
       std::make_unique<parallel::distributed::SolutionTransfer<dim, VectorType>>(
         dof_handler);
+    return carried;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::prepare_for_repartition()
+  {
+    // ghosted_carried_vectors() makes solution_transfer: call it first.
+    const std::vector<const VectorType *> carried = ghosted_carried_vectors();
     solution_transfer->prepare_for_coarsening_and_refinement(carried);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::prepare_for_serialization()
+  {
+    const std::vector<const VectorType *> carried = ghosted_carried_vectors();
+    solution_transfer->prepare_for_serialization(carried);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::deserialize()
+  {
+    std::vector<VectorType *> carried = carried_vectors();
+    for (VectorType *v : carried)
+      initialize_vector(*v);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
+    transfer.deserialize(carried);
+    reset_after_dof_change();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::set_external_work(const double work_so_far)
+  {
+    work = work_so_far;
   }
 
   template <int dim>
@@ -164,10 +206,7 @@ namespace PeriArlequin
   void
   FEZone<dim>::reset_after_dof_change()
   {
-    for (VectorType *v : {&internal_force,
-                          &previous_applied_force,
-                          &previous_displacement,
-                          &interface_force})
+    for (VectorType *v : {&previous_applied_force, &previous_displacement, &interface_force})
       initialize_vector(*v);
     for (VectorType *v : {&state.displacement, &state.velocity, &state.acceleration})
       v->update_ghost_values();

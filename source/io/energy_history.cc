@@ -30,15 +30,7 @@ namespace PeriArlequin
     if (table.empty())
       {
         names = row_names;
-        if (root && !file_name.empty())
-          {
-            csv.open(file_name);
-            AssertThrow(csv,
-                        ExcMessage("Cannot open the energy history file '" + file_name + "'."));
-            for (unsigned int i = 0; i < names.size(); ++i)
-              csv << (i ? "," : "") << names[i];
-            csv << '\n' << std::setprecision(12);
-          }
+        open_file();
       }
     AssertThrow(row_names.size() == names.size(),
                 ExcMessage("A history row gives " + std::to_string(row_names.size()) +
@@ -50,6 +42,39 @@ namespace PeriArlequin
     table.push_back(row);
     row_names.clear();
     row_values.clear();
+    write_row(row);
+  }
+
+  void
+  EnergyHistory::restore(const std::vector<std::string>         &column_names,
+                         const std::vector<std::vector<double>> &rows)
+  {
+    AssertThrow(table.empty() && row_names.empty(),
+                ExcMessage("EnergyHistory::restore() needs an empty history."));
+    names = column_names;
+    table = rows;
+    if (table.empty())
+      return;
+    open_file();
+    for (const auto &row : table)
+      write_row(row);
+  }
+
+  void
+  EnergyHistory::open_file()
+  {
+    if (!root || file_name.empty())
+      return;
+    csv.open(file_name);
+    AssertThrow(csv, ExcMessage("Cannot open the energy history file '" + file_name + "'."));
+    for (unsigned int i = 0; i < names.size(); ++i)
+      csv << (i ? "," : "") << names[i];
+    csv << '\n' << std::setprecision(12);
+  }
+
+  void
+  EnergyHistory::write_row(const std::vector<double> &row)
+  {
     if (!csv.is_open())
       return;
     for (unsigned int i = 0; i < row.size(); ++i)

@@ -120,6 +120,13 @@ namespace PeriArlequin
     velocity.zero_out_ghost_values();
   }
 
+  template <int dim>
+  PVDSeries &
+  FEOutput<dim>::get_series()
+  {
+    return series;
+  }
+
   template class FEOutput<2>;
   template class FEOutput<3>;
 } // namespace PeriArlequin

@@ -32,6 +32,13 @@ namespace PeriArlequin
                                                    6));
   }
 
+  template <int dim>
+  PVDSeries &
+  PDOutput<dim>::get_series()
+  {
+    return series;
+  }
+
   template class PDOutput<2>;
   template class PDOutput<3>;
 } // namespace PeriArlequin

@@ -15,7 +15,26 @@ namespace PeriArlequin
   PVDSeries::add(const double time, const std::string &pvtu_file_name)
   {
     records.emplace_back(time, pvtu_file_name);
-    if (!writer)
+    write();
+  }
+
+  const std::vector<std::pair<double, std::string>> &
+  PVDSeries::get_records() const
+  {
+    return records;
+  }
+
+  void
+  PVDSeries::restore(const std::vector<std::pair<double, std::string>> &earlier_records)
+  {
+    records = earlier_records;
+    write();
+  }
+
+  void
+  PVDSeries::write() const
+  {
+    if (!writer || records.empty())
       return;
     std::ofstream pvd(file_name);
     DataOutBase::write_pvd_record(pvd, records);

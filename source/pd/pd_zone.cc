@@ -121,8 +121,7 @@ namespace PeriArlequin
   {
     problem_data = &data;
     time_step    = dt;
-    const unsigned int n_properties = 2 * dim + 1 + model->n_particle_scalars();
-    particle_handler.initialize(triangulation, mapping, n_properties);
+    particle_handler.initialize(triangulation, mapping, n_particle_properties());
     insert_particles([this](const Point<dim> &x, types::particle_index) { return extent(x); });
     AssertThrow(particle_handler.n_global_particles() > 0,
                 ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
@@ -132,6 +131,13 @@ namespace PeriArlequin
     if (fracture)
       fracture->initialize(parameters, *model, bonds);
     set_initial_state();
+  }
+
+  template <int dim>
+  unsigned int
+  PDZone<dim>::n_particle_properties() const
+  {
+    return 2 * dim + 1 + model->n_particle_scalars();
   }
 
   template <int dim>
@@ -371,51 +377,79 @@ namespace PeriArlequin
 
   namespace
   {
-    /** What a particle takes along to its new owner in a repartition. */
+    /**
+     * What a particle takes along to its new owner in a repartition or a checkpoint: its
+     * kinematics, applied force, strain energy density (so the energies of the step that
+     * repartitioned are those of its force pass) and broken bonds.
+     */
     template <int dim>
     struct TransferredParticle
     {
       types::particle_index              id;
       std::array<Tensor<1, dim>, 4>      kinematics;
+      double                             energy_density;
       std::vector<types::particle_index> broken_partners;
 
       template <class Archive>
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &id &kinematics &broken_partners;
+        archive &id &kinematics &energy_density &broken_partners;
       }
     };
   } // namespace
+
+  template <int dim>
+  std::vector<char>
+  PDZone<dim>::pack_particle_state(const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    std::vector<TransferredParticle<dim>> records;
+    const auto                            ids = ghosts.ids();
+    for (const auto &particle : particle_handler.particles_in_cell(
+           typename Triangulation<dim>::active_cell_iterator(cell)))
+      {
+        const unsigned int       i = ghosts.local_index(particle.get_id());
+        TransferredParticle<dim> record{particle.get_id(),
+                                        {{state.displacements()[i],
+                                          state.velocities()[i],
+                                          state.accelerations()[i],
+                                          applied_force[i]}},
+                                        energy_density[i],
+                                        {}};
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          if (bonds.state[n] == BondFamilies<dim>::broken)
+            record.broken_partners.push_back(ids[bonds.neighbor[n]]);
+        records.push_back(std::move(record));
+      }
+    return Utilities::pack(records, false);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::attach_particle_state()
+  {
+    state_handle = triangulation.register_data_attach(
+      [this](const typename Triangulation<dim>::cell_iterator &cell,
+             const typename Triangulation<dim>::CellStatus) {
+        return pack_particle_state(cell);
+      },
+      /*returns_variable_size_data=*/true);
+  }
 
   template <int dim>
   void
   PDZone<dim>::prepare_for_repartition()
   {
     particle_handler.prepare_for_coarsening_and_refinement();
-    state_handle = triangulation.register_data_attach(
-      [this](const typename Triangulation<dim>::cell_iterator &cell,
-             const typename Triangulation<dim>::CellStatus) {
-        std::vector<TransferredParticle<dim>> records;
-        const auto                            ids = ghosts.ids();
-        for (const auto &particle : particle_handler.particles_in_cell(
-               typename Triangulation<dim>::active_cell_iterator(cell)))
-          {
-            const unsigned int       i = ghosts.local_index(particle.get_id());
-            TransferredParticle<dim> record{particle.get_id(),
-                                            {{state.displacements()[i],
-                                              state.velocities()[i],
-                                              state.accelerations()[i],
-                                              applied_force[i]}},
-                                            {}};
-            for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-              if (bonds.state[n] == BondFamilies<dim>::broken)
-                record.broken_partners.push_back(ids[bonds.neighbor[n]]);
-            records.push_back(std::move(record));
-          }
-        return Utilities::pack(records, false);
-      },
-      /*returns_variable_size_data=*/true);
+    attach_particle_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::prepare_for_serialization()
+  {
+    particle_handler.prepare_for_serialization();
+    attach_particle_state();
   }
 
   template <int dim>
@@ -425,6 +459,28 @@ namespace PeriArlequin
     Assert(state_handle != numbers::invalid_unsigned_int,
            ExcMessage("Call prepare_for_repartition() first."));
     particle_handler.unpack_after_coarsening_and_refinement();
+    receive_particle_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::setup_from_checkpoint(const ProblemData<dim> &data, const double dt)
+  {
+    problem_data = &data;
+    time_step    = dt;
+    particle_handler.initialize(triangulation, mapping, n_particle_properties());
+    particle_handler.deserialize();
+    // The handles of a loaded triangulation are those of the save, in the order registered.
+    attach_particle_state();
+    receive_particle_state();
+    if (fracture)
+      fracture->initialize(parameters, *model, bonds);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::receive_particle_state()
+  {
     std::unordered_map<types::particle_index, TransferredParticle<dim>> received;
     triangulation.notify_ready_to_unpack(
       state_handle,
@@ -440,23 +496,39 @@ namespace PeriArlequin
     state_handle = numbers::invalid_unsigned_int;
 
     build_particle_structures();
-    const auto                            ids = ghosts.ids();
+    const auto                                   ids = ghosts.ids();
     std::set<typename BondFamilies<dim>::IdPair> broken;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
         const auto found = received.find(ids[i]);
         AssertThrow(found != received.end(),
-                    ExcMessage("A particle arrived without its state in a repartition."));
+                    ExcMessage("A particle arrived without its state in a repartition or "
+                               "from a checkpoint."));
         const auto &[u, v, a, f] = found->second.kinematics;
         state.displacements()[i] = u;
         state.velocities()[i]    = v;
         state.accelerations()[i] = a;
         applied_force[i]         = f;
+        energy_density[i]        = found->second.energy_density;
         for (const types::particle_index partner : found->second.broken_partners)
           broken.emplace(std::minmax(ids[i], partner));
       }
     bonds.break_bonds(broken, ids);
     update_ghost_displacements();
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::local_external_work() const
+  {
+    return work;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_local_external_work(const double work_so_far)
+  {
+    work = work_so_far;
   }
 
   template <int dim>

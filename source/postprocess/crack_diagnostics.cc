@@ -6,6 +6,12 @@
 #include <periarlequin/postprocess/crack_diagnostics.h>
 #include <periarlequin/simulator.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/set.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -559,6 +565,54 @@ namespace PeriArlequin
     const unsigned int step     = simulator.get_step_number();
     if (interval > 0 && (step % interval == 0 || step == simulator.get_n_steps()))
       write_damage_map(simulator);
+  }
+
+  template <int dim>
+  std::string
+  CrackDiagnostics<dim>::save_state() const
+  {
+    std::ostringstream bytes;
+    {
+      boost::archive::binary_oarchive archive(bytes);
+      const bool has_tracker = tracker != nullptr, has_initiation = initiation != nullptr;
+      archive << has_tracker << has_initiation << initial_area;
+      if (has_tracker)
+        archive << *tracker;
+      if (has_initiation)
+        {
+          archive << *initiation;
+          for (const auto *loads : {&load_at_initiation, &load_at_growth})
+            archive << (*loads)[0] << (*loads)[1] << (*loads)[2];
+        }
+    }
+    return bytes.str();
+  }
+
+  template <int dim>
+  void
+  CrackDiagnostics<dim>::load_state(const std::string &state)
+  {
+    std::istringstream              bytes(state);
+    boost::archive::binary_iarchive archive(bytes);
+    bool                            has_tracker = false, has_initiation = false;
+    archive >> has_tracker >> has_initiation >> initial_area;
+    tracker.reset();
+    initiation.reset();
+    if (has_tracker)
+      {
+        tracker = std::make_unique<CrackTracker<dim>>(0., 0.);
+        archive >> *tracker;
+      }
+    if (has_initiation)
+      {
+        initiation = std::make_unique<CrackInitiation<dim>>(Point<dim>(),
+                                                            0.,
+                                                            0.,
+                                                            std::array<double, 2>{{0., 0.}});
+        archive >> *initiation;
+        for (auto *loads : {&load_at_initiation, &load_at_growth})
+          archive >> (*loads)[0] >> (*loads)[1] >> (*loads)[2];
+      }
   }
 
   template <int dim>

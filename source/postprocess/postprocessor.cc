@@ -8,6 +8,18 @@
 namespace PeriArlequin
 {
   template <int dim>
+  std::string
+  Postprocessor<dim>::save_state() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::load_state(const std::string &)
+  {}
+
+  template <int dim>
   void
   Postprocessor<dim>::parse_parameters(ParameterHandler &)
   {}

@@ -36,6 +36,14 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  PredictorCorrector<dim>::resume_at(const unsigned int step_number)
+  {
+    while (time.get_step_number() < step_number)
+      time.advance_time();
+  }
+
+  template <int dim>
+  void
   PredictorCorrector<dim>::step()
   {
     const double dt = time.get_next_step_size();

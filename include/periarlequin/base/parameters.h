@@ -293,6 +293,22 @@ namespace PeriArlequin
       void
       parse_parameters(ParameterHandler &prm);
     };
+
+    /** When to write checkpoints, and whether to resume from one. */
+    struct Checkpoint
+    {
+      unsigned int interval           = 0;
+      double       wall_time_interval = 0;
+      bool         at_end             = false;
+      bool         resume             = false;
+
+      void
+      entries(ParameterEntries &entries);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
   } // namespace Parameters
 } // namespace PeriArlequin
 

@@ -134,6 +134,12 @@ namespace PeriArlequin
      */
     void
     add_to_pd_region(const std::vector<Box<dim>> &boxes);
+    /**
+     * Make the pure PD region @p grown, a region that add_to_pd_region() reached in an
+     * earlier run (a checkpoint). Only for a band.
+     */
+    void
+    set_pd_region(const Region<dim> &grown);
 
   private:
     BlendingProfile            profile;

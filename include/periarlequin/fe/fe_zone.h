@@ -102,6 +102,19 @@ namespace PeriArlequin
     void
     unpack_after_repartition();
 
+    /** Before Triangulation::save(): attach the state vectors of prepare_for_repartition(). */
+    void
+    prepare_for_serialization();
+    /**
+     * After Triangulation::load() and setup() (with the FE cells of the saved run) and
+     * initialize_state(): the state vectors from the checkpoint.
+     */
+    void
+    deserialize();
+    /** Restore the work done so far (from a checkpoint) [J]. */
+    void
+    set_external_work(const double work_so_far);
+
     /**
      * Initial displacement and velocity from the problem's initial data at t = 0, and the
      * prescribed boundary DoFs (their motion by central differences over @p time_step).
@@ -231,6 +244,9 @@ namespace PeriArlequin
     /** The vectors a change of the FE cells or of their owners keeps. */
     std::vector<VectorType *>
     carried_vectors();
+    /** carried_vectors() with their ghosts updated, and a new solution_transfer for them. */
+    std::vector<const VectorType *>
+    ghosted_carried_vectors();
     /**
      * After the DoFs changed and carried_vectors() were filled: the other vectors laid out
      * anew, ghosts updated, prescribed DoFs found again, nodal force weights dropped.

@@ -35,11 +35,23 @@ namespace PeriArlequin
     column_names() const;
     const std::vector<std::vector<double>> &
     rows() const;
+    /**
+     * Start from the columns and rows of an earlier run (a checkpoint); the file, if any,
+     * is written anew with them.
+     */
+    void
+    restore(const std::vector<std::string> &column_names, const std::vector<std::vector<double>> &rows);
     /** The values of one named column over all rows. */
     std::vector<double>
     column(const std::string &name) const;
 
   private:
+    /** Open the file (rank 0, if named) and write the header of the columns. */
+    void
+    open_file();
+    void
+    write_row(const std::vector<double> &row);
+
     std::string                      file_name;
     bool                             root;
     std::vector<std::string>         names;

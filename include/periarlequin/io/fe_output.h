@@ -32,6 +32,10 @@ namespace PeriArlequin
           const LinearAlgebra::distributed::Vector<double> &displacement,
           const LinearAlgebra::distributed::Vector<double> &velocity);
 
+    /** The .pvd record of the files written (kept in checkpoints). */
+    PVDSeries &
+    get_series();
+
   private:
     const FEZone<dim>                        &fe_zone;
     const Parameters::Output                  parameters;

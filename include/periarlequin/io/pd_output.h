@@ -23,6 +23,10 @@ namespace PeriArlequin
     void
     write(const unsigned int step, const double time);
 
+    /** The .pvd record of the files written (kept in checkpoints). */
+    PVDSeries &
+    get_series();
+
   private:
     PDZone<dim>             &pd_zone;
     const Parameters::Output parameters;

@@ -20,7 +20,17 @@ namespace PeriArlequin
     void
     add(const double time, const std::string &pvtu_file_name);
 
+    /** The (time, file) records so far. */
+    const std::vector<std::pair<double, std::string>> &
+    get_records() const;
+    /** Start from the records of an earlier run (a checkpoint); the .pvd is written anew. */
+    void
+    restore(const std::vector<std::pair<double, std::string>> &earlier_records);
+
   private:
+    void
+    write() const;
+
     const std::string                           file_name;
     const bool                                  writer;
     std::vector<std::pair<double, std::string>> records;

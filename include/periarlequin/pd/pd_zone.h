@@ -290,7 +290,38 @@ namespace PeriArlequin
     void
     unpack_after_repartition();
 
+    /** Before Triangulation::save(): attach the particles and their state to their cells. */
+    void
+    prepare_for_serialization();
+    /**
+     * Instead of setup(), after Triangulation::load() (and the FE zone's deserialize()): the
+     * particles and their state from the checkpoint, with the region of the saved run
+     * (set_region()), and what setup() builds.
+     */
+    void
+    setup_from_checkpoint(const ProblemData<dim> &data, const double time_step);
+    /** This rank's share of external_work(), and its restoration from a checkpoint [J]. */
+    double
+    local_external_work() const;
+    void
+    set_local_external_work(const double work_so_far);
+
   private:
+    /** Properties per particle in the particle handler (for output). */
+    unsigned int
+    n_particle_properties() const;
+    /** The particles of @p cell and their state, packed for another rank or a file. */
+    std::vector<char>
+    pack_particle_state(const typename Triangulation<dim>::cell_iterator &cell) const;
+    /** Register pack_particle_state() with the triangulation. */
+    void
+    attach_particle_state();
+    /**
+     * After the particle handler received its particles: their state from the data that
+     * attach_particle_state() registered, then what setup() builds.
+     */
+    void
+    receive_particle_state();
     /**
      * Insert a particle at every site of a locally owned cell that @p accept takes, given
      * its position and lattice id.

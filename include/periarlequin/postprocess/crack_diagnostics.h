@@ -62,6 +62,13 @@ namespace PeriArlequin
       /** Least-squares slope of the path length over the last @p window records [m/s]. */
       double
       speed(const unsigned int window) const;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &times &tips &path_lengths &active;
+      }
     };
 
     CrackTracker(const double link_distance, const double branch_separation);
@@ -78,6 +85,14 @@ namespace PeriArlequin
     /** The largest path length at the last record [m]. */
     double
     crack_extension() const;
+
+    /** All of the tracker's state (a checkpoint of CrackDiagnostics). */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &link_distance &branch_separation &first_cracked &n_records &branches &extension;
+    }
 
   private:
     double link_distance, branch_separation;
@@ -140,6 +155,15 @@ namespace PeriArlequin
     unsigned int
     n_fitted_particles() const;
 
+    /** All of the diagnostics' state (a checkpoint of CrackDiagnostics). */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &tip &direction &horizon &fit_range[0] &fit_range[1] &first_record
+        &initial_broken_near_tip &initially_cracked &initiation &growth &angle &n_fitted;
+    }
+
   private:
     Point<dim>                        tip;
     Tensor<1, 2>                      direction;
@@ -189,6 +213,11 @@ namespace PeriArlequin
     parse_parameters(ParameterHandler &prm) override;
     void
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+    /** The tracked branches, the initiation events and the initial crack area. */
+    std::string
+    save_state() const override;
+    void
+    load_state(const std::string &state) override;
 
   private:
     /** Update the initiation diagnostics and add their columns (and say when it happens). */

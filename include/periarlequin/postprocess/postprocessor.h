@@ -35,6 +35,16 @@ namespace PeriArlequin
     /** Add this step's values to @p history (EnergyHistory::add_value), on every rank. */
     virtual void
     execute(const Simulator<dim> &simulator, EnergyHistory &history) = 0;
+
+    /**
+     * What the postprocessor carries from one record to the next, as bytes for a
+     * checkpoint (rank 0's is kept); empty for one that carries nothing.
+     */
+    virtual std::string
+    save_state() const;
+    /** Continue from what save_state() returned in the checkpointed run (on every rank). */
+    virtual void
+    load_state(const std::string &state);
   };
 
   /** The registry of postprocessors. */

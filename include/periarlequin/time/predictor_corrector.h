@@ -38,6 +38,12 @@ namespace PeriArlequin
     /** Accelerations at t = 0 (eq. 60), with prescribed nodes and slaves on their masters. */
     void
     initialize();
+    /**
+     * Instead of initialize(), continuing from a checkpoint whose state the zones hold: the
+     * clock advanced to step @p step_number by the same additions as the steps made it.
+     */
+    void
+    resume_at(const unsigned int step_number);
 
     /** One step from t_n to t_n+1. */
     void
