@@ -11,6 +11,7 @@
 
 #include <periarlequin/simulator.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -35,6 +36,13 @@ namespace
     ParameterHandler prm;
     PeriArlequin::Simulator<dim>::declare_parameters(prm);
     prm.parse_input(file_name);
+    // A relative Geometry/Mesh file is read from the parameter file's directory.
+    prm.enter_subsection("Geometry");
+    const std::filesystem::path mesh_file = prm.get("Mesh file");
+    if (!mesh_file.empty() && mesh_file.is_relative())
+      prm.set("Mesh file",
+              (std::filesystem::path(file_name).parent_path() / mesh_file).lexically_normal().string());
+    prm.leave_subsection();
     PeriArlequin::Simulator<dim> simulator(prm, MPI_COMM_WORLD);
     if (check_only)
       {

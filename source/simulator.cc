@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
@@ -166,6 +167,11 @@ namespace PeriArlequin
                                   "none, unless the zones are coupled (Coupling/Method) across "
                                   "a band that can move with the PD region (Coupling/Overlap "
                                   "width > 0)");
+        if (!geometry.mesh_file.empty())
+          throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
+                                  conversion,
+                                  "none with Geometry/Mesh file: converted cells join the PD "
+                                  "region as boxes, which only the cells of the box mesh are");
         conversion_criterion = ConversionCriterionRegistry<dim>::create(conversion, prm);
       }
     prm.leave_subsection();
@@ -190,8 +196,7 @@ namespace PeriArlequin
         prm.leave_subsection();
         blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
                                                         coupling->blending_profile(),
-                                                        pd_parameters.region,
-                                                        geometry);
+                                                        pd_parameters.region);
       }
     monitor_region = output_parameters.monitor_region.empty() ?
                        pd_parameters.region :
@@ -211,15 +216,7 @@ namespace PeriArlequin
   Simulator<dim>::setup()
   {
     TimerOutput::Scope scope(timer, "setup");
-    Point<dim>                p1, p2;
-    std::vector<unsigned int> cells(dim);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        p1[d]    = geometry.lower_corner[d];
-        p2[d]    = geometry.upper_corner[d];
-        cells[d] = geometry.subdivisions[d];
-      }
-    GridGenerator::subdivided_hyper_rectangle(triangulation, cells, p1, p2, true);
+    make_coarse_mesh();
     if (checkpoint_parameters.resume)
       {
         read_checkpoint();
@@ -243,6 +240,8 @@ namespace PeriArlequin
       }
     else
       triangulation.refine_global(geometry.global_refinements);
+    if (blending)
+      check_blending_against_mesh();
 
     if (!pd_parameters.region.empty())
       {
@@ -765,6 +764,119 @@ namespace PeriArlequin
           << std::scientific << get_time() << " s, wall " << std::fixed << std::setprecision(1)
           << wall << " s, about " << remaining << " s to go" << std::defaultfloat
           << std::setprecision(6) << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::make_coarse_mesh()
+  {
+    if (geometry.mesh_file.empty())
+      {
+        Point<dim>                p1, p2;
+        std::vector<unsigned int> cells(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            p1[d]    = geometry.lower_corner[d];
+            p2[d]    = geometry.upper_corner[d];
+            cells[d] = geometry.subdivisions[d];
+          }
+        GridGenerator::subdivided_hyper_rectangle(triangulation, cells, p1, p2, true);
+        return;
+      }
+
+    std::ifstream file(geometry.mesh_file);
+    if (!file)
+      throw_invalid_parameter("Geometry/Mesh file",
+                              geometry.mesh_file,
+                              "a readable Gmsh .msh file (a relative path is read from the "
+                              "parameter file's directory)");
+    // Read into a serial triangulation first: p4est takes quadrilaterals and hexahedra only.
+    Triangulation<dim> coarse;
+    GridIn<dim>        grid_in(coarse);
+    try
+      {
+        grid_in.read_msh(file);
+      }
+    catch (const std::exception &error)
+      {
+        throw_invalid_parameter("Geometry/Mesh file",
+                                geometry.mesh_file,
+                                std::string("a mesh that deal.II's GridIn::read_msh reads (Gmsh "
+                                            "format 2 or 4, ASCII); reading it said: ") +
+                                  error.what());
+      }
+    if (!coarse.all_reference_cells_are_hyper_cube())
+      throw_invalid_parameter("Geometry/Mesh file",
+                              geometry.mesh_file,
+                              dim == 2 ? "a mesh of quadrilaterals (recombine the triangles in "
+                                         "Gmsh: Recombine Surface)" :
+                                         "a mesh of hexahedra");
+    triangulation.copy_triangulation(coarse);
+    // The PD lattice is anchored at the mesh's bounding box.
+    const auto &vertices = triangulation.get_vertices();
+    const auto &used     = triangulation.get_used_vertices();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        geometry.lower_corner[d] = std::numeric_limits<double>::max();
+        geometry.upper_corner[d] = std::numeric_limits<double>::lowest();
+      }
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (used[v])
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            geometry.lower_corner[d] = std::min(geometry.lower_corner[d], vertices[v][d]);
+            geometry.upper_corner[d] = std::max(geometry.upper_corner[d], vertices[v][d]);
+          }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_blending_against_mesh()
+  {
+    Tensor<1, dim>          cell_size;
+    std::vector<Point<dim>> points;
+    if (geometry.mesh_file.empty())
+      {
+        // The box: its cells' size and its half-cell grid of points.
+        std::array<unsigned int, dim> n_cells;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n_cells[d]   = geometry.subdivisions[d] << geometry.global_refinements;
+            cell_size[d] = (geometry.upper_corner[d] - geometry.lower_corner[d]) / n_cells[d];
+          }
+        std::array<unsigned int, dim> index;
+        const auto visit = [&](const auto &self, const unsigned int d) -> void {
+          if (d == dim)
+            {
+              Point<dim> p;
+              for (unsigned int e = 0; e < dim; ++e)
+                p[e] = geometry.lower_corner[e] + 0.5 * index[e] * cell_size[e];
+              points.push_back(p);
+              return;
+            }
+          for (index[d] = 0; index[d] <= 2 * n_cells[d]; ++index[d])
+            self(self, d + 1);
+        };
+        visit(visit, 0);
+      }
+    else
+      {
+        // A mesh file: the largest extent of the cells in each direction, over all ranks,
+        // and the vertices and centres of this rank's cells.
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const BoundingBox<dim> box = cell->bounding_box();
+              for (unsigned int d = 0; d < dim; ++d)
+                cell_size[d] = std::max(cell_size[d], box.side_length(d));
+              for (const unsigned int v : cell->vertex_indices())
+                points.push_back(cell->vertex(v));
+              points.push_back(cell->center());
+            }
+        for (unsigned int d = 0; d < dim; ++d)
+          cell_size[d] = Utilities::MPI::max(cell_size[d], communicator);
+      }
+    blending->check_against_mesh(cell_size, points);
   }
 
   template <int dim>

@@ -172,6 +172,15 @@ namespace PeriArlequin
     get_stable_time_step() const;
 
   private:
+    /**
+     * The coarse mesh: the box of Geometry, or the Gmsh file of Geometry/Mesh file (then the
+     * corners become its bounding box).
+     */
+    void
+    make_coarse_mesh();
+    /** BlendingField::check_against_mesh() with the cell size and points of this mesh. */
+    void
+    check_blending_against_mesh();
     void
     setup_fe_zone();
     /** Repartition with the cell weights: zones' state moved, coupling rebuilt. */

@@ -36,6 +36,17 @@ namespace PeriArlequin
     void
     Geometry::entries(ParameterEntries &entries)
     {
+      entries.add("Mesh file",
+                  mesh_file,
+                  Patterns::Anything(),
+                  "A Gmsh mesh (.msh, format 2 or 4, ASCII; quadrilaterals in 2D, hexahedra "
+                  "in 3D) as the coarse mesh, a path relative to the parameter file's "
+                  "directory; empty: the box below. Boundary ids are the physical tags of its "
+                  "lines (2D) or surfaces (3D): ids 0 to 2 dim - 1 take Boundary conditions/"
+                  "Boundary <id>, larger ids are free. Lower corner, Upper corner and "
+                  "Subdivisions are then not used (the PD lattice is anchored at the mesh's "
+                  "bounding box). The PD region's boxes must follow cell faces (mesh them as "
+                  "surfaces of their own).");
       entries.add("Lower corner",
                   lower_corner,
                   Patterns::List(Patterns::Double(), 2, 3),

@@ -121,12 +121,13 @@ namespace PeriArlequin
   template <int dim>
   BlendingField<dim>::BlendingField(const Parameters::Coupling &coupling,
                                     const BlendingProfile       profile,
-                                    const Region<dim>          &pure_pd_region,
-                                    const Parameters::Geometry &geometry)
+                                    const Region<dim>          &pure_pd_region)
     : profile(profile)
     , pure_pd(pure_pd_region)
     , overlap_region(Region<dim>::parse(coupling.overlap_text, "Coupling/Overlap region"))
     , pure_fe(Region<dim>::parse(coupling.fe_region_text, "Coupling/Finite element region"))
+    , overlap_text(coupling.overlap_text)
+    , fe_region_text(coupling.fe_region_text)
     , band_width(coupling.overlap_width)
   {
     if (pure_pd.empty())
@@ -134,16 +135,6 @@ namespace PeriArlequin
                               "",
                               "at least one box (the pure PD zone) when Coupling/Method is not "
                               "none");
-
-    // Cell size of the mesh and a sample of points (vertices and centres of the cells).
-    std::array<unsigned int, dim> n_cells;
-    Tensor<1, dim>                h;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        n_cells[d] = geometry.subdivisions[d] << geometry.global_refinements;
-        h[d]       = (geometry.upper_corner[d] - geometry.lower_corner[d]) / n_cells[d];
-      }
-    length_tolerance = 1e-10 * h.norm();
 
     if (band_width > 0)
       {
@@ -156,15 +147,6 @@ namespace PeriArlequin
                                     "nothing when Coupling/Overlap width is set: the overlap "
                                     "is then the band around the PD region and the FE region "
                                     "the rest");
-        double largest_cell = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          largest_cell = std::max(largest_cell, h[d]);
-        if (band_width < largest_cell * (1. - 1e-10))
-          {
-            std::ostringstream allowed;
-            allowed << "a band at least one FE cell (" << largest_cell << " m) wide";
-            throw_invalid_parameter("Coupling/Overlap width", band_width, allowed.str());
-          }
         return;
       }
 
@@ -178,6 +160,28 @@ namespace PeriArlequin
                               coupling.fe_region_text,
                               "at least one box (the pure FE zone) when Coupling/Method is not "
                               "none and no Coupling/Overlap width is set");
+  }
+
+  template <int dim>
+  void
+  BlendingField<dim>::check_against_mesh(const Tensor<1, dim>          &cell_size,
+                                         const std::vector<Point<dim>> &points)
+  {
+    length_tolerance = 1e-10 * cell_size.norm();
+
+    if (band_width > 0)
+      {
+        double largest_cell = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          largest_cell = std::max(largest_cell, cell_size[d]);
+        if (band_width < largest_cell * (1. - 1e-10))
+          {
+            std::ostringstream allowed;
+            allowed << "a band at least one FE cell (" << largest_cell << " m) wide";
+            throw_invalid_parameter("Coupling/Overlap width", band_width, allowed.str());
+          }
+        return;
+      }
 
     // The alpha = 0 and alpha = 1 edges: apart by at least one cell across the overlap.
     for (const auto &pd_box : pure_pd.boxes)
@@ -186,7 +190,7 @@ namespace PeriArlequin
           const Tensor<1, dim> gap = pd_box.gap(fe_box);
           if (gap.norm() == 0)
             throw_invalid_parameter("Coupling/Finite element region",
-                                    coupling.fe_region_text,
+                                    fe_region_text,
                                     "boxes that neither touch nor cross the pure PD region "
                                     "(here " + box_text(fe_box) + " meets " + box_text(pd_box) +
                                       "): the alpha = 0 and alpha = 1 edges must be an "
@@ -195,43 +199,29 @@ namespace PeriArlequin
           for (unsigned int d = 1; d < dim; ++d)
             if (gap[d] > gap[across])
               across = d;
-          if (gap.norm() < h[across] * (1. - 1e-10))
+          if (gap.norm() < cell_size[across] * (1. - 1e-10))
             {
               std::ostringstream allowed;
-              allowed << "an overlap at least one FE cell (" << h[across]
+              allowed << "an overlap at least one FE cell (" << cell_size[across]
                       << " m) wide; between this box and the PD box " << box_text(pd_box)
                       << " it is " << gap.norm() << " m";
-              throw_invalid_parameter("Coupling/Overlap region",
-                                      coupling.overlap_text,
-                                      allowed.str());
+              throw_invalid_parameter("Coupling/Overlap region", overlap_text, allowed.str());
             }
         }
 
-    const double tolerance = length_tolerance;
-    std::array<unsigned int, dim> index;
-    const auto                    visit = [&](const auto &self, const unsigned int d) -> void {
-      if (d == dim)
+    for (const Point<dim> &p : points)
+      if (!pure_pd.contains(p, length_tolerance) &&
+          !overlap_region.contains(p, length_tolerance) &&
+          !pure_fe.contains(p, length_tolerance))
         {
-          Point<dim> p;
-          for (unsigned int e = 0; e < dim; ++e)
-            p[e] = geometry.lower_corner[e] + 0.5 * index[e] * h[e];
-          if (!pure_pd.contains(p, tolerance) && !overlap_region.contains(p, tolerance) &&
-              !pure_fe.contains(p, tolerance))
-            {
-              std::ostringstream value;
-              value << p;
-              throw_invalid_parameter("Coupling/Finite element region",
-                                      coupling.fe_region_text,
-                                      "zones that cover the domain: the point " + value.str() +
-                                        " is in none of Peridynamics/Region, Coupling/Overlap "
-                                        "region and Coupling/Finite element region");
-            }
-          return;
+          std::ostringstream value;
+          value << p;
+          throw_invalid_parameter("Coupling/Finite element region",
+                                  fe_region_text,
+                                  "zones that cover the domain: the point " + value.str() +
+                                    " is in none of Peridynamics/Region, Coupling/Overlap "
+                                    "region and Coupling/Finite element region");
         }
-      for (index[d] = 0; index[d] <= 2 * n_cells[d]; ++index[d])
-        self(self, d + 1);
-    };
-    visit(visit, 0);
   }
 
   template <int dim>

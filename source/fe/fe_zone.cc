@@ -294,26 +294,19 @@ namespace PeriArlequin
                               std::vector<Point<dim>>   &points,
                               std::vector<unsigned int> &components) const
   {
-    // Cells are axis-aligned boxes: map the unit support points with the bounding box.
     std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> located;
     std::vector<types::global_dof_index>          dof_indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
           continue;
-        const Point<dim> lower = cell->vertex(0);
-        const Point<dim> upper = cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
-        const auto      &unit  = cell->get_fe().get_unit_support_points();
+        const auto &unit = cell->get_fe().get_unit_support_points();
         dof_indices.resize(cell->get_fe().n_dofs_per_cell());
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
           if (locally_owned_dofs.is_element(dof_indices[i]))
-            {
-              Point<dim> p;
-              for (unsigned int d = 0; d < dim; ++d)
-                p[d] = lower[d] + unit[i][d] * (upper[d] - lower[d]);
-              located[dof_indices[i]] = {p, cell->get_fe().system_to_component_index(i).first};
-            }
+            located[dof_indices[i]] = {mapping.transform_unit_to_real_cell(cell, unit[i]),
+                                       cell->get_fe().system_to_component_index(i).first};
       }
     local_dofs.clear();
     points.clear();
@@ -400,7 +393,8 @@ namespace PeriArlequin
             add_load(hp_fe_values.get_present_fe_values(), body_force);
           }
         for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f))
+          if (cell->at_boundary(f) &&
+              cell->face(f)->boundary_id() < ProblemData<dim>::n_boundaries)
             {
               const auto &condition = data.boundary_conditions[cell->face(f)->boundary_id()];
               if (condition.type != BoundaryType::traction)
@@ -442,8 +436,10 @@ namespace PeriArlequin
           {
             if (!cell->at_boundary(f))
               continue;
+            // Boundary ids past those of Boundary conditions (a mesh file's) are free.
             const unsigned int id = cell->face(f)->boundary_id();
-            AssertThrow(id < data.boundary_conditions.size(), ExcInternalError());
+            if (id >= ProblemData<dim>::n_boundaries)
+              continue;
             const auto &condition = data.boundary_conditions[id];
             if (condition.type != BoundaryType::displacement)
               continue;

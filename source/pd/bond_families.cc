@@ -1,5 +1,7 @@
 #include <periarlequin/pd/bond_families.h>
 
+#include <sstream>
+
 #include <deal.II/base/exceptions.h>
 
 #include <cmath>
@@ -118,6 +120,18 @@ namespace PeriArlequin
     return all;
   }
 
+  namespace
+  {
+    template <int dim>
+    std::string
+    point_text(const Point<dim> &x)
+    {
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+  } // namespace
+
   template <int dim>
   void
   BondFamilies<dim>::build(const Lattice<dim>                           &lattice,
@@ -148,9 +162,13 @@ namespace PeriArlequin
             if (j == numbers::invalid_unsigned_int)
               {
                 AssertThrow(!extent(lattice.position(*other)),
-                            ExcMessage("A neighbour within the horizon is neither owned nor a "
-                                       "ghost particle: the ghost layer does not cover the "
-                                       "horizon."));
+                            ExcMessage("Invalid input: a neighbour within the horizon of the "
+                                       "particle at " + point_text(x[i]) +
+                                       " m is neither owned nor a ghost particle: one layer "
+                                       "of ghost cells does not cover the bonds there "
+                                       "(Peridynamics/Horizon factor and Lattice spacing); "
+                                       "allowed: background cells at least delta + dx/2 wide "
+                                       "wherever particles are, also around them."));
                 continue;
               }
             // The full family gives the weighted volume; a bond between two owned particles

@@ -1,6 +1,8 @@
 #include <periarlequin/pd/pd_zone.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/vector.h>
 
 #include <boost/serialization/array.hpp>
@@ -8,6 +10,7 @@
 
 #include <array>
 #include <set>
+#include <tuple>
 #include <sstream>
 #include <unordered_map>
 
@@ -40,6 +43,7 @@ namespace PeriArlequin
     , material(material)
     , communicator(triangulation.get_communicator())
     , mapping(1)
+    , general_cells(!geometry.mesh_file.empty())
     , ghosts(particle_handler)
     , model(std::move(model))
     , fracture(std::move(fracture))
@@ -66,27 +70,189 @@ namespace PeriArlequin
           box_text << box.lower << " : " << box.upper;
           throw_invalid_parameter("Peridynamics/Region",
                                   box_text.str(),
-                                  "boxes inside the domain 'Geometry/Lower corner' to "
-                                  "'Geometry/Upper corner'");
+                                  general_cells ?
+                                    "boxes inside the bounding box of 'Geometry/Mesh file'" :
+                                    "boxes inside the domain 'Geometry/Lower corner' to "
+                                    "'Geometry/Upper corner'");
         }
     bonds.build_stencil(dx, parameters.horizon());
   }
 
   namespace
   {
+    /** Is @p x in @p cell (closed, within @p tolerance in unit coordinates)? */
     template <int dim>
-    std::pair<Point<dim>, Point<dim>>
-    cell_bounds(const typename Triangulation<dim>::cell_iterator &cell)
+    bool
+    cell_contains(const Mapping<dim>                                       &mapping,
+                  const typename Triangulation<dim>::active_cell_iterator &cell,
+                  const Point<dim>                                         &x,
+                  const double                                              tolerance)
     {
-      return {cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
+      if (!cell->bounding_box().point_inside(x, tolerance * cell->diameter()))
+        return false;
+      try
+        {
+          const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, x);
+          return GeometryInfo<dim>::is_inside_unit_cell(unit, tolerance);
+        }
+      catch (const typename Mapping<dim>::ExcTransformationFailed &)
+        {
+          return false;
+        }
     }
+
+    /**
+     * Which cells of the whole local mesh (artificial ones too: without manifolds they cover
+     * the domain exactly) hold a point: a hash grid of their bounding boxes.
+     */
+    template <int dim>
+    class CellLocator
+    {
+    public:
+      CellLocator(const Triangulation<dim> &triangulation, const Mapping<dim> &mapping)
+        : mapping(mapping)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          bin_size = std::max(bin_size, cell->diameter());
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            const auto [lower, upper] = cell->bounding_box().get_boundary_points();
+            const auto first = bin(lower), last = bin(upper);
+            std::array<long, dim> b;
+            const auto visit = [&](const auto &self, const unsigned int d) -> void {
+              if (d == dim)
+                {
+                  bins[b].push_back(cell);
+                  return;
+                }
+              for (b[d] = first[d]; b[d] <= last[d]; ++b[d])
+                self(self, d + 1);
+            };
+            visit(visit, 0);
+          }
+      }
+
+      bool
+      holds(const Point<dim> &x) const
+      {
+        const auto found = bins.find(bin(x));
+        if (found == bins.end())
+          return false;
+        for (const auto &cell : found->second)
+          if (cell_contains<dim>(mapping, cell, x, 1e-10))
+            return true;
+        return false;
+      }
+
+    private:
+      std::array<long, dim>
+      bin(const Point<dim> &x) const
+      {
+        std::array<long, dim> b;
+        for (unsigned int d = 0; d < dim; ++d)
+          b[d] = static_cast<long>(std::floor(x[d] / bin_size));
+        return b;
+      }
+
+      struct BinHash
+      {
+        std::size_t
+        operator()(const std::array<long, dim> &b) const
+        {
+          std::size_t h = 0;
+          for (const long c : b)
+            h = h * 1000003u + static_cast<std::size_t>(c);
+          return h;
+        }
+      };
+
+      const Mapping<dim> &mapping;
+      double              bin_size = 0;
+      std::unordered_map<std::array<long, dim>,
+                         std::vector<typename Triangulation<dim>::active_cell_iterator>,
+                         BinHash>
+        bins;
+    };
   } // namespace
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  PDZone<dim>::cell_bounds(const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    if (!general_cells)
+      return {cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
+    // The bounding box, closed on top: owns_site() decides between the cells that share it.
+    const BoundingBox<dim> box   = cell->bounding_box();
+    Point<dim>             upper = box.get_boundary_points().second;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] += 1e-10 * parameters.lattice_spacing;
+    return {box.get_boundary_points().first, upper};
+  }
+
+  template <int dim>
+  bool
+  PDZone<dim>::owns_site(const typename Triangulation<dim>::active_cell_iterator &cell,
+                         const Point<dim>                                         &x) const
+  {
+    if (!general_cells)
+      return true;
+    constexpr double tolerance = 1e-10;
+    if (!cell_contains<dim>(mapping, cell, x, tolerance))
+      return false;
+    const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, x);
+    bool             on_boundary = false;
+    for (unsigned int d = 0; d < dim; ++d)
+      on_boundary = on_boundary || unit[d] < tolerance || unit[d] > 1. - tolerance;
+    if (!on_boundary)
+      return true;
+    // A site on a face, an edge or a vertex belongs to the cell of the smallest CellId that
+    // holds it, among the cells around this one (ghosts included: the decision is the same
+    // on every rank).
+    for (const unsigned int v : cell->vertex_indices())
+      for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
+        if (other != cell && other->id() < cell->id() && cell_contains<dim>(mapping, other, x, tolerance))
+          return false;
+    return true;
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::cell_width(const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    if (!general_cells)
+      {
+        const auto [lower, upper] = cell_bounds(cell);
+        double width              = upper[0] - lower[0];
+        for (unsigned int d = 1; d < dim; ++d)
+          width = std::min(width, upper[d] - lower[d]);
+        return width;
+      }
+    // Twice the least distance from the centre to the line (plane) of a face: the height of
+    // a parallelogram (parallelepiped), the least width of a box.
+    double half = std::numeric_limits<double>::max();
+    for (const unsigned int f : cell->face_indices())
+      {
+        const auto     face = cell->face(f);
+        Tensor<1, dim> normal;
+        if constexpr (dim == 2)
+          {
+            const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+            normal[0]              = t[1];
+            normal[1]              = -t[0];
+          }
+        else
+          normal = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                    face->vertex(2) - face->vertex(1));
+        half = std::min(half, std::abs((cell->center() - face->center()) * normal) / normal.norm());
+      }
+    return 2. * half;
+  }
 
   template <int dim>
   unsigned int
   PDZone<dim>::cell_weight(const typename Triangulation<dim>::cell_iterator &cell) const
   {
-    const auto [lower, upper] = cell_bounds<dim>(cell);
+    const auto [lower, upper] = cell_bounds(cell);
     unsigned int n            = 0;
     lattice.for_each_site_in(lower, upper, [&](const auto &site) {
       n += extent(lattice.position(site));
@@ -99,6 +265,55 @@ namespace PeriArlequin
   PDZone<dim>::contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const
   {
     return region.contains(cell->center());
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::check_region_follows_cells() const
+  {
+    // A cell with a vertex inside the region (more than a tolerance from its boundary) and
+    // one outside it: its centre's side would decide for all of it.
+    const double tolerance = 1e-8 * parameters.lattice_spacing;
+    const auto   inside    = [&](const Point<dim> &x) {
+      for (const Box<dim> &box : region.boxes)
+        {
+          bool in = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            in = in && x[d] > box.lower[d] + tolerance && x[d] < box.upper[d] - tolerance;
+          if (in)
+            return true;
+        }
+      return false;
+    };
+    bool       straddles = false;
+    Point<dim> where;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && !straddles)
+        {
+          bool some_in = false, some_out = false;
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              some_in  = some_in || inside(cell->vertex(v));
+              some_out = some_out || !region.contains(cell->vertex(v), tolerance);
+            }
+          if (some_in && some_out)
+            {
+              straddles = true;
+              where     = cell->center();
+            }
+        }
+    if (Utilities::MPI::logical_or(straddles, communicator))
+      {
+        std::ostringstream allowed;
+        allowed << "with Geometry/Mesh file, boxes whose edges follow the faces of the cells "
+                   "(mesh the PD region as surfaces of its own in Gmsh)";
+        if (straddles)
+          allowed << "; the cell around " << where << " m lies across the region's boundary";
+        std::ostringstream region_text;
+        for (const Box<dim> &box : region.boxes)
+          region_text << (region_text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
+        throw_invalid_parameter("Peridynamics/Region", region_text.str(), allowed.str());
+      }
   }
 
   template <int dim>
@@ -122,6 +337,8 @@ namespace PeriArlequin
     problem_data = &data;
     time_step    = dt;
     particle_handler.initialize(triangulation, mapping, n_particle_properties());
+    if (general_cells)
+      check_region_follows_cells();
     insert_particles([this](const Point<dim> &x, types::particle_index) { return extent(x); });
     AssertThrow(particle_handler.n_global_particles() > 0,
                 ExcMessage("Invalid input: parameter 'Peridynamics/Region' holds no lattice "
@@ -152,19 +369,22 @@ namespace PeriArlequin
   PDZone<dim>::insert_particles(
     const std::function<bool(const Point<dim> &, types::particle_index)> &accept)
   {
+    if (general_cells)
+      vertex_to_cells = GridTools::vertex_to_cell_map(triangulation);
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
           continue;
-        const auto [lower, upper] = cell_bounds<dim>(cell);
+        const auto [lower, upper] = cell_bounds(cell);
         lattice.for_each_site_in(lower, upper, [&](const auto &site) {
           const Point<dim> x = lattice.position(site);
-          if (accept(x, lattice.id(site)))
+          if (owns_site(cell, x) && accept(x, lattice.id(site)))
             particle_handler.insert_particle(
               x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
         });
       }
     particle_handler.update_cached_numbers();
+    vertex_to_cells.clear();
   }
 
   template <int dim>
@@ -176,7 +396,15 @@ namespace PeriArlequin
     compute_blending_weights();
     // Bonds in the overlap and the slave layer never break: the coupling assumes a continuum
     // there.
-    bonds.build(lattice, ghosts, extent, parameters.pre_cracks, [this](const Point<dim> &x) {
+    // On a general mesh a site of the extent may lie outside the mesh (a hole, a notch): no
+    // particle, no bond, and no error.
+    std::unique_ptr<CellLocator<dim>> locator;
+    if (general_cells)
+      locator = std::make_unique<CellLocator<dim>>(triangulation, mapping);
+    const SiteFilter extent_in_mesh = [&](const Point<dim> &x) {
+      return extent(x) && (!locator || locator->holds(x));
+    };
+    bonds.build(lattice, ghosts, extent_in_mesh, parameters.pre_cracks, [this](const Point<dim> &x) {
       return parameters.no_fail_region.contains(x) || blending_weight(x) > 0;
     });
     find_bonds_near_overlap();
@@ -295,6 +523,11 @@ namespace PeriArlequin
     const double depth = 2. * (parameters.horizon() + 0.5 * dx);
     const auto   x     = ghosts.reference_positions();
     traction_faces.assign(ghosts.n_owned(), 0);
+    if (general_cells)
+      {
+        check_clear_of_loaded_boundaries(depth);
+        return;
+      }
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       {
         const auto        &condition = problem_data->boundary_conditions[b];
@@ -312,6 +545,49 @@ namespace PeriArlequin
                      distance < depth * (1. - 1e-12))
               prescribed.add(i, x[i], *condition.function, components);
           }
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::check_clear_of_loaded_boundaries(const double depth) const
+  {
+    // The boundary faces with a traction or a displacement, from all cells this rank knows
+    // (artificial ones too: without manifolds their faces hold the finer faces), each as its
+    // centre and half its diameter, so that centre distance - half diameter bounds the
+    // distance to the face from below.
+    std::vector<std::tuple<Point<dim>, double, types::boundary_id>> faces;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() < ProblemData<dim>::n_boundaries &&
+            problem_data->boundary_conditions[face->boundary_id()].type != BoundaryType::free)
+          faces.emplace_back(face->center(), 0.5 * face->diameter(), face->boundary_id());
+    const auto x     = ghosts.reference_positions();
+    bool       close = false;
+    Point<dim> where;
+    unsigned int id = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned() && !close; ++i)
+      if (!slave[i])
+        for (const auto &[centre, radius, boundary] : faces)
+          if (x[i].distance(centre) - radius < depth)
+            {
+              close = true;
+              where = x[i];
+              id    = boundary;
+              break;
+            }
+    if (Utilities::MPI::logical_or(close, communicator))
+      {
+        std::ostringstream allowed;
+        allowed << "with Geometry/Mesh file, a PD region whose particles (slaves excepted) stay "
+                << depth << " m (two bond reaches) away from the boundaries that carry a "
+                << "traction or a displacement: give those boundaries to the FE zone";
+        if (close)
+          allowed << " (the particle at " << where << " m is near boundary " << id << ")";
+        std::ostringstream region_text;
+        for (const Box<dim> &box : region.boxes)
+          region_text << (region_text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
+        throw_invalid_parameter("Peridynamics/Region", region_text.str(), allowed.str());
       }
   }
 
@@ -540,11 +816,7 @@ namespace PeriArlequin
     double smallest = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && particle_handler.n_particles_in_cell(cell) > 0)
-        {
-          const auto [lower, upper] = cell_bounds<dim>(cell);
-          for (unsigned int d = 0; d < dim; ++d)
-            smallest = std::min(smallest, upper[d] - lower[d]);
-        }
+        smallest = std::min(smallest, cell_width(cell));
     smallest           = Utilities::MPI::min(smallest, communicator);
     const double reach = parameters.horizon() + 0.5 * parameters.lattice_spacing;
     if (smallest < reach * (1. - 1e-12))

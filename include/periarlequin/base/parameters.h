@@ -181,9 +181,13 @@ namespace PeriArlequin
 
   namespace Parameters
   {
-    /** A box domain meshed by a subdivided hyper-rectangle. */
+    /**
+     * The domain: a box meshed by a subdivided hyper-rectangle, or a mesh read from a Gmsh
+     * file (then the corners become the mesh's bounding box, the PD lattice's anchor).
+     */
     struct Geometry
     {
+      std::string               mesh_file;
       std::vector<double>       lower_corner       = {0, 0};
       std::vector<double>       upper_corner       = {1, 1};
       std::vector<unsigned int> subdivisions       = {10, 10};

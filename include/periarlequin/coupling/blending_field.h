@@ -89,8 +89,8 @@ namespace PeriArlequin
    * (alpha = 1) (BlendingProfile::step).
    *
    * The zones are given either as boxes (Coupling/Overlap region and Finite element region;
-   * the constructor checks that they cover the domain, that the alpha = 0 and alpha = 1 edges
-   * neither touch nor cross and that the overlap is at least one FE cell wide), or as a band
+   * check_against_mesh() checks that they cover the domain, that the alpha = 0 and alpha = 1
+   * edges neither touch nor cross and that the overlap is at least one FE cell wide), or as a band
    * of width w around the PD region (Coupling/Overlap width): alpha = min(1, l1 / w), which is
    * eq. 37 across a strip and needs no FE region. Only a band follows a PD region that grows
    * (add_to_pd_region()).
@@ -101,8 +101,16 @@ namespace PeriArlequin
   public:
     BlendingField(const Parameters::Coupling &coupling,
                   const BlendingProfile       profile,
-                  const Region<dim>          &pure_pd_region,
-                  const Parameters::Geometry &geometry);
+                  const Region<dim>          &pure_pd_region);
+
+    /**
+     * The checks that need the mesh, given the largest cell extent in each direction [m] and
+     * points that sample the domain (a box: its half-cell grid; a mesh file: the vertices
+     * and centres of the cells): a band at least one cell wide; boxes whose alpha = 0 and
+     * alpha = 1 edges are at least one cell apart, and that cover every point.
+     */
+    void
+    check_against_mesh(const Tensor<1, dim> &cell_size, const std::vector<Point<dim>> &points);
 
     /** alpha(x) in [0, 1]. */
     double
@@ -144,10 +152,12 @@ namespace PeriArlequin
   private:
     BlendingProfile            profile;
     Region<dim>                pure_pd, overlap_region, pure_fe;
+    /** The entries the boxes came from, for messages. */
+    std::string                overlap_text, fe_region_text;
     /** Width of the band (0: the overlap and FE regions are boxes) [m]. */
     double                     band_width;
-    /** Tolerance for merging the boxes of the PD region [m]. */
-    double                     length_tolerance;
+    /** Tolerance for merging the boxes of the PD region [m] (set by check_against_mesh()). */
+    double                     length_tolerance = 0;
   };
 } // namespace PeriArlequin
 

@@ -25,6 +25,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace PeriArlequin
@@ -92,7 +93,10 @@ namespace PeriArlequin
     unsigned int
     cell_weight(const typename Triangulation<dim>::cell_iterator &cell) const;
 
-    /** Does the PD region contain the centre of @p cell? */
+    /**
+     * Is @p cell pure PD (no FE unknowns)? When the PD region holds its centre (on a mesh
+     * file the region follows cell faces: check_region_follows_cells()).
+     */
     bool
     contains_cell(const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
@@ -307,6 +311,35 @@ namespace PeriArlequin
     set_local_external_work(const double work_so_far);
 
   private:
+    /**
+     * The box whose lattice sites may belong to @p cell: the cell itself (half-open) for the
+     * box mesh, its bounding box for a general mesh.
+     */
+    std::pair<Point<dim>, Point<dim>>
+    cell_bounds(const typename Triangulation<dim>::cell_iterator &cell) const;
+    /**
+     * Does the site at @p x (found in cell_bounds()) belong to @p cell? Always for the box
+     * mesh; for a general mesh, if the cell holds it and, for a site on its boundary, no cell
+     * of smaller CellId around it does: each site in exactly one cell.
+     */
+    bool
+    owns_site(const typename Triangulation<dim>::active_cell_iterator &cell,
+              const Point<dim>                                         &x) const;
+    /**
+     * On a general mesh the PD zone takes no boundary layers: a clear error if a particle
+     * that is not a slave lies within @p depth of a boundary with a traction or displacement.
+     */
+    void
+    check_clear_of_loaded_boundaries(const double depth) const;
+    /**
+     * On a general mesh: a clear error if a cell lies across the boundary of the PD region
+     * (its FE unknowns and the blending would disagree there).
+     */
+    void
+    check_region_follows_cells() const;
+    /** The least width of @p cell (between opposite faces) [m]. */
+    double
+    cell_width(const typename Triangulation<dim>::active_cell_iterator &cell) const;
     /** Properties per particle in the particle handler (for output). */
     unsigned int
     n_particle_properties() const;
@@ -372,6 +405,14 @@ namespace PeriArlequin
     const Parameters::Material                 material;
     const MPI_Comm                             communicator;
     MappingQ<dim>                              mapping;
+    /**
+     * The mesh came from a file (Geometry/Mesh file): cells are general quadrilaterals or
+     * hexahedra, a lattice site belongs to the cell that holds it (owns_site()), not to the
+     * axis-aligned box of a cell.
+     */
+    bool                                       general_cells;
+    /** While particles are inserted into a general mesh: the cells around each vertex. */
+    std::vector<std::set<typename Triangulation<dim>::active_cell_iterator>> vertex_to_cells;
     Particles::ParticleHandler<dim>            particle_handler;
     GhostExchange<dim>                         ghosts;
     ParticleState<dim>                         state;
