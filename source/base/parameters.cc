@@ -89,6 +89,13 @@ namespace PeriArlequin
     Geometry::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
       ParameterEntries::parse(prm, "Geometry", *this);
+      // A mesh file replaces the box (its corners become the mesh's bounding box).
+      if (!mesh_file.empty())
+        {
+          lower_corner.resize(dim);
+          upper_corner.resize(dim);
+          return;
+        }
       const auto check_size = [&](const std::string &name, const auto &values) {
         if (values.size() != dim)
           throw_invalid_parameter("Geometry/" + name,

@@ -14,8 +14,8 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * The two checkpoint slots of a run, <directory>/<base>_checkpoint_0 and _1, and the file
-   * <base>_checkpoint.last that names the newest complete one. A checkpoint is written into
+   * The two checkpoint slots of a run, `DIRECTORY/BASE_checkpoint_0` and `_1`, and the file
+   * `BASE_checkpoint.last` that names the newest complete one. A checkpoint is written into
    * the other slot and only then named, by renaming a new pointer file over the old (atomic
    * on POSIX file systems): a run killed while writing leaves the previous checkpoint named
    * and intact.
