@@ -11,6 +11,7 @@
 
 #include <deal.II/base/function.h>
 
+#include <periarlequin/coupling/interpolation_operator.h>
 #include <periarlequin/simulator.h>
 
 #include <algorithm>
@@ -193,6 +194,58 @@ namespace PeriArlequinTests
     simulator.get_fe_zone().support_points(dofs, points, components);
     for (unsigned int k = 0; k < dofs.size(); ++k)
       visit(dofs[k], points[k], components[k]);
+  }
+
+  /** Euclidean distance from @p x to the box [@p lower, @p upper] (0 inside). */
+  template <int dim>
+  double
+  distance_to_box(const Point<dim> &x, const Point<dim> &lower, const Point<dim> &upper)
+  {
+    Tensor<1, dim> gap;
+    for (unsigned int d = 0; d < dim; ++d)
+      gap[d] = std::max({lower[d] - x[d], 0., x[d] - upper[d]});
+    return gap.norm();
+  }
+
+  /**
+   * The vector field @p field interpolated on the FE DoFs of @p simulator (set up) and then
+   * to its PD particles in FE cells (alpha > 0) by the interpolation N: the largest error
+   * against @p field at the particles, relative to the field's largest magnitude there,
+   * over all ranks. Reports the number of particles.
+   */
+  template <int dim>
+  double
+  interpolation_error_at_particles(const PeriArlequin::Simulator<dim> &simulator,
+                                   const Function<dim>                &field)
+  {
+    const auto                                &fe = simulator.get_fe_zone();
+    const auto                                &pd = *simulator.get_pd_zone();
+    LinearAlgebra::distributed::Vector<double> u;
+    fe.initialize_vector(u);
+    fe.interpolate(field, u);
+    u.update_ghost_values();
+    std::vector<unsigned int> coupled;
+    const auto                alpha = pd.blending_weights();
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (alpha[i] > 0)
+        coupled.push_back(i);
+    PeriArlequin::InterpolationOperator<dim> interpolation;
+    interpolation.reinit(fe, pd, coupled);
+    const auto x     = pd.reference_positions();
+    double     worst = 0, magnitude = 0;
+    for (unsigned int r = 0; r < coupled.size(); ++r)
+      {
+        const Tensor<1, dim> value = interpolation.interpolate(u, r);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const double exact = field.value(x[coupled[r]], c);
+            worst              = std::max(worst, std::abs(value[c] - exact));
+            magnitude          = std::max(magnitude, std::abs(exact));
+          }
+      }
+    report("particles interpolated", Utilities::MPI::sum(coupled.size(), MPI_COMM_WORLD));
+    return Utilities::MPI::max(worst, MPI_COMM_WORLD) /
+           Utilities::MPI::max(magnitude, MPI_COMM_WORLD);
   }
 
   /** Assert measured > bound, printing the verdict. */

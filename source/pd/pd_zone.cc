@@ -80,6 +80,17 @@ namespace PeriArlequin
 
   namespace
   {
+    /** @p region as the text of Peridynamics/Region, for messages. */
+    template <int dim>
+    std::string
+    region_text(const Region<dim> &region)
+    {
+      std::ostringstream text;
+      for (const Box<dim> &box : region.boxes)
+        text << (text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
+      return text.str();
+    }
+
     /** Is @p x in @p cell (closed, within @p tolerance in unit coordinates)? */
     template <int dim>
     bool
@@ -309,10 +320,7 @@ namespace PeriArlequin
                    "(mesh the PD region as surfaces of its own in Gmsh)";
         if (straddles)
           allowed << "; the cell around " << where << " m lies across the region's boundary";
-        std::ostringstream region_text;
-        for (const Box<dim> &box : region.boxes)
-          region_text << (region_text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
-        throw_invalid_parameter("Peridynamics/Region", region_text.str(), allowed.str());
+        throw_invalid_parameter("Peridynamics/Region", region_text(region), allowed.str());
       }
   }
 
@@ -334,9 +342,7 @@ namespace PeriArlequin
   void
   PDZone<dim>::setup(const ProblemData<dim> &data, const double dt)
   {
-    problem_data = &data;
-    time_step    = dt;
-    particle_handler.initialize(triangulation, mapping, n_particle_properties());
+    initialize_particle_handler(data, dt);
     if (general_cells)
       check_region_follows_cells();
     insert_particles([this](const Point<dim> &x, types::particle_index) { return extent(x); });
@@ -348,6 +354,15 @@ namespace PeriArlequin
     if (fracture)
       fracture->initialize(parameters, *model, bonds);
     set_initial_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::initialize_particle_handler(const ProblemData<dim> &data, const double dt)
+  {
+    problem_data = &data;
+    time_step    = dt;
+    particle_handler.initialize(triangulation, mapping, n_particle_properties());
   }
 
   template <int dim>
@@ -584,10 +599,7 @@ namespace PeriArlequin
                 << "traction or a displacement: give those boundaries to the FE zone";
         if (close)
           allowed << " (the particle at " << where << " m is near boundary " << id << ")";
-        std::ostringstream region_text;
-        for (const Box<dim> &box : region.boxes)
-          region_text << (region_text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
-        throw_invalid_parameter("Peridynamics/Region", region_text.str(), allowed.str());
+        throw_invalid_parameter("Peridynamics/Region", region_text(region), allowed.str());
       }
   }
 
@@ -742,9 +754,7 @@ namespace PeriArlequin
   void
   PDZone<dim>::setup_from_checkpoint(const ProblemData<dim> &data, const double dt)
   {
-    problem_data = &data;
-    time_step    = dt;
-    particle_handler.initialize(triangulation, mapping, n_particle_properties());
+    initialize_particle_handler(data, dt);
     particle_handler.deserialize();
     // The handles of a loaded triangulation are those of the save, in the order registered.
     attach_particle_state();

@@ -13,8 +13,6 @@
 //  - on 2 ranks the energy history of 40 steps equals 1 rank to 1e-10 of each column's
 //    magnitude (sums in another order).
 
-#include <periarlequin/coupling/interpolation_operator.h>
-
 #include "../tests.h"
 
 using namespace PeriArlequinTests;
@@ -41,15 +39,6 @@ namespace
            // dt is a third of the stable step: a short estimate decides as well.
            "  set Stability estimate iterations = 20\nend\n" +
            quiet_output() + "subsection Output\n  set Energy interval = 5\nend\n";
-  }
-
-  double
-  distance_to_box(const Point<3> &x, const Point<3> &lower, const Point<3> &upper)
-  {
-    Tensor<1, 3> gap;
-    for (unsigned int d = 0; d < 3; ++d)
-      gap[d] = std::max({lower[d] - x[d], 0., x[d] - upper[d]});
-    return gap.norm();
   }
 } // namespace
 
@@ -92,34 +81,9 @@ main(int argc, char **argv)
         return 1e-3 * (a[c][0] * p[0] + a[c][1] * p[1] + a[c][2] * p[2]) + 1e-5 * (c + 1);
       }
     };
-    const auto                                &fe = simulator->get_fe_zone();
-    LinearAlgebra::distributed::Vector<double> u;
-    fe.initialize_vector(u);
-    fe.interpolate(Linear(), u);
-    u.update_ghost_values();
-    std::vector<unsigned int> coupled;
-    const auto                alpha = pd.blending_weights();
-    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
-      if (alpha[i] > 0)
-        coupled.push_back(i);
-    PeriArlequin::InterpolationOperator<3> interpolation;
-    interpolation.reinit(fe, pd, coupled);
-    const auto x     = pd.reference_positions();
-    double     worst = 0, magnitude = 0;
-    for (unsigned int r = 0; r < coupled.size(); ++r)
-      {
-        const Tensor<1, 3> value = interpolation.interpolate(u, r);
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            const double exact = Linear().value(x[coupled[r]], c);
-            worst              = std::max(worst, std::abs(value[c] - exact));
-            magnitude          = std::max(magnitude, std::abs(exact));
-          }
-      }
-    worst     = Utilities::MPI::max(worst, MPI_COMM_WORLD);
-    magnitude = Utilities::MPI::max(magnitude, MPI_COMM_WORLD);
-    report("particles interpolated", Utilities::MPI::sum(coupled.size(), MPI_COMM_WORLD));
-    check_below("linear field through N, error / magnitude", worst / magnitude, 1e-10);
+    check_below("linear field through N, error / magnitude",
+                interpolation_error_at_particles(*simulator, Linear()),
+                1e-10);
 
     if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
       check_below("2 ranks vs 1 rank, largest history difference",

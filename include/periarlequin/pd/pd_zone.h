@@ -340,6 +340,9 @@ namespace PeriArlequin
     /** The least width of @p cell (between opposite faces) [m]. */
     double
     cell_width(const typename Triangulation<dim>::active_cell_iterator &cell) const;
+    /** The problem data and time step kept, the particle handler on the mesh, empty. */
+    void
+    initialize_particle_handler(const ProblemData<dim> &data, const double time_step);
     /** Properties per particle in the particle handler (for output). */
     unsigned int
     n_particle_properties() const;
