@@ -384,6 +384,7 @@ namespace PeriArlequin
           restore_saved_partition();
         else if (pd_zone)
           rebalance(0.);
+        saved_owner.clear();
       }
     else
       integrator->initialize();
@@ -640,7 +641,6 @@ namespace PeriArlequin
         }
     repartition_zones();
     partition_weights.clear();
-    saved_owner.clear();
   }
 
   template <int dim>

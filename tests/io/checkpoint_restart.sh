@@ -8,10 +8,11 @@
 #     (mesh, FE vectors, particles with their state and broken bonds, record with the whole
 #     energy history as binary doubles) and its energy history, last damage map and .pvd records
 #     must equal the reference's byte for byte: the state a checkpoint restores is the whole state;
-#  3. the killed run resumed on R' ranks (another number): the energy history agrees with the
-#     reference to 1e-10 of each column's largest magnitude (sums in another order: 1 and 2
-#     ranks agree to 1e-13 in adaptivity/growing_crack_mpi), counts (broken bonds, particles,
-#     converted cells) exactly;
+#  3. the killed run resumed on R' ranks (another number), writing checkpoints on a wall-time
+#     budget as it goes: the energy history agrees with the reference to 1e-10 of each
+#     column's largest magnitude (sums in another order: 1 and 2 ranks agree to 1e-13 in
+#     adaptivity/growing_crack_mpi), counts (broken bonds, particles, converted cells)
+#     exactly;
 #  4. bad checkpoints get a clear error: a truncated record, a cell-data file that does not
 #     match its checksum, other parameters, no checkpoint at all.
 # Usage: checkpoint_restart.sh <application> <mpiexec> <case.prm> <R> <R'> <work directory>
@@ -114,8 +115,11 @@ done
 echo "killed and resumed on $ranks rank(s): final state, energy history and .pvd records identical to the uninterrupted run"
 
 # 3. Resumed on another number of ranks.
-case_file other.prm "$work/other" "Resume = true"
+# With checkpoints on a wall-time budget (every 0.2 s), which must not change the run.
+case_file other.prm "$work/other" "Resume = true" "Wall time interval = 0.2"
 $(command_for "$other_ranks") other.prm > other.log 2>&1 || { cat other.log; fail "run resumed on $other_ranks rank(s)"; }
+[ "$(grep -c 'checkpoint written' other.log)" -ge 1 ] || fail "no checkpoint on the wall-time budget"
+echo "resumed on $other_ranks rank(s): $(grep -c 'checkpoint written' other.log) checkpoints on the wall-time budget"
 awk -F, -v tolerance=1e-10 '
   FNR == 1 { for (c = 1; c <= NF; ++c) column[FILENAME, $c] = c; next }
   FILENAME == ARGV[1] { rows = FNR; for (c = 1; c <= NF; ++c) reference[FNR, c] = $c; next }
