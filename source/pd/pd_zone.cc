@@ -393,7 +393,7 @@ namespace PeriArlequin
         const auto [lower, upper] = cell_bounds(cell);
         lattice.for_each_site_in(lower, upper, [&](const auto &site) {
           const Point<dim> x = lattice.position(site);
-          if (owns_site(cell, x) && accept(x, lattice.id(site)))
+          if (accept(x, lattice.id(site)) && owns_site(cell, x))
             particle_handler.insert_particle(
               x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
         });
