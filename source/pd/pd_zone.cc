@@ -10,7 +10,6 @@
 
 #include <array>
 #include <set>
-#include <tuple>
 #include <sstream>
 #include <unordered_map>
 
@@ -571,26 +570,37 @@ namespace PeriArlequin
     // (artificial ones too: without manifolds their faces hold the finer faces), each as its
     // centre and half its diameter, so that centre distance - half diameter bounds the
     // distance to the face from below.
-    std::vector<std::tuple<Point<dim>, double, types::boundary_id>> faces;
+    // Only the lattice sites around each face are looked at: the check costs the boundary's
+    // size, not particles times faces.
+    const auto   x     = ghosts.reference_positions();
+    bool         close = false;
+    Point<dim>   where;
+    unsigned int id = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() < ProblemData<dim>::n_boundaries &&
+        if (!close && face->at_boundary() &&
+            face->boundary_id() < ProblemData<dim>::n_boundaries &&
             problem_data->boundary_conditions[face->boundary_id()].type != BoundaryType::free)
-          faces.emplace_back(face->center(), 0.5 * face->diameter(), face->boundary_id());
-    const auto x     = ghosts.reference_positions();
-    bool       close = false;
-    Point<dim> where;
-    unsigned int id = 0;
-    for (unsigned int i = 0; i < ghosts.n_owned() && !close; ++i)
-      if (!slave[i])
-        for (const auto &[centre, radius, boundary] : faces)
-          if (x[i].distance(centre) - radius < depth)
-            {
-              close = true;
-              where = x[i];
-              id    = boundary;
-              break;
-            }
+          {
+            const Point<dim> centre = face->center();
+            const double     radius = 0.5 * face->diameter();
+            Point<dim>       lower = centre, upper = centre;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] -= radius + depth;
+                upper[d] += radius + depth;
+              }
+            lattice.for_each_site_in(lower, upper, [&](const auto &site) {
+              const unsigned int i = ghosts.local_index(lattice.id(site));
+              if (!close && i < ghosts.n_owned() && !slave[i] &&
+                  x[i].distance(centre) - radius < depth)
+                {
+                  close = true;
+                  where = x[i];
+                  id    = face->boundary_id();
+                }
+            });
+          }
     if (Utilities::MPI::logical_or(close, communicator))
       {
         std::ostringstream allowed;
