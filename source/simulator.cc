@@ -31,8 +31,8 @@ namespace PeriArlequin
     std::vector<std::string> parameters;
     unsigned int             n_ranks = 0;
     unsigned int             step    = 0;
-    /** The pure PD region, per box its lower then its upper corner [m]. */
-    std::vector<double>      pd_region;
+    /** The pure PD region (grown by an adaptive zone). */
+    Region<dim>              pd_region;
     unsigned int             converted_cells = 0, repartitions = 0;
     double                   conversion_energy = 0, fe_work = 0;
     /** Each rank's share of the PD zone's external work [J]. */
@@ -271,21 +271,9 @@ namespace PeriArlequin
                                 coupling_parameters.minimum_pd_weight);
         if (resumed)
           {
-            Region<dim> region;
-            const auto &corners = resumed->pd_region;
-            for (unsigned int k = 0; k + 2 * dim <= corners.size(); k += 2 * dim)
-              {
-                Box<dim> box;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    box.lower[d] = corners[k + d];
-                    box.upper[d] = corners[k + dim + d];
-                  }
-                region.boxes.push_back(box);
-              }
             if (blending && blending->is_band())
-              blending->set_pd_region(region);
-            pd_zone->set_region(region);
+              blending->set_pd_region(resumed->pd_region);
+            pd_zone->set_region(resumed->pd_region);
           }
         // Balance particles x family size (and FE cells) across ranks before DoFs exist (a
         // checkpoint keeps its partition, rebalanced below on another number of ranks).
@@ -926,9 +914,7 @@ namespace PeriArlequin
         record.n_ranks    = Utilities::MPI::n_mpi_processes(communicator);
         record.step       = get_step_number();
         if (pd_zone)
-          for (const Box<dim> &box : pd_zone->get_region().boxes)
-            for (unsigned int k = 0; k < 2 * dim; ++k)
-              record.pd_region.push_back(k < dim ? box.lower[k] : box.upper[k - dim]);
+          record.pd_region = pd_zone->get_region();
         record.converted_cells   = converted_cells;
         record.repartitions      = repartitions;
         record.conversion_energy = conversion_energy;

@@ -9,6 +9,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <array>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -90,25 +91,28 @@ namespace PeriArlequin
       return text.str();
     }
 
-    /** Is @p x in @p cell (closed, within @p tolerance in unit coordinates)? */
+    /**
+     * The unit coordinates of @p x in @p cell if the cell holds it (closed, within
+     * @p tolerance in unit coordinates), else nothing.
+     */
     template <int dim>
-    bool
-    cell_contains(const Mapping<dim>                                       &mapping,
+    std::optional<Point<dim>>
+    unit_point_in(const Mapping<dim>                                       &mapping,
                   const typename Triangulation<dim>::active_cell_iterator &cell,
                   const Point<dim>                                         &x,
                   const double                                              tolerance)
     {
       if (!cell->bounding_box().point_inside(x, tolerance * cell->diameter()))
-        return false;
+        return {};
       try
         {
           const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, x);
-          return GeometryInfo<dim>::is_inside_unit_cell(unit, tolerance);
+          if (GeometryInfo<dim>::is_inside_unit_cell(unit, tolerance))
+            return unit;
         }
       catch (const typename Mapping<dim>::ExcTransformationFailed &)
-        {
-          return false;
-        }
+        {}
+      return {};
     }
 
     /**
@@ -149,7 +153,7 @@ namespace PeriArlequin
         if (found == bins.end())
           return false;
         for (const auto &cell : found->second)
-          if (cell_contains<dim>(mapping, cell, x, 1e-10))
+          if (unit_point_in<dim>(mapping, cell, x, 1e-10))
             return true;
         return false;
       }
@@ -206,13 +210,13 @@ namespace PeriArlequin
   {
     if (!general_cells)
       return true;
-    constexpr double tolerance = 1e-10;
-    if (!cell_contains<dim>(mapping, cell, x, tolerance))
+    constexpr double                tolerance = 1e-10;
+    const std::optional<Point<dim>> unit      = unit_point_in<dim>(mapping, cell, x, tolerance);
+    if (!unit)
       return false;
-    const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, x);
-    bool             on_boundary = false;
+    bool on_boundary = false;
     for (unsigned int d = 0; d < dim; ++d)
-      on_boundary = on_boundary || unit[d] < tolerance || unit[d] > 1. - tolerance;
+      on_boundary = on_boundary || (*unit)[d] < tolerance || (*unit)[d] > 1. - tolerance;
     if (!on_boundary)
       return true;
     // A site on a face, an edge or a vertex belongs to the cell of the smallest CellId that
@@ -220,7 +224,8 @@ namespace PeriArlequin
     // on every rank).
     for (const unsigned int v : cell->vertex_indices())
       for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
-        if (other != cell && other->id() < cell->id() && cell_contains<dim>(mapping, other, x, tolerance))
+        if (other != cell && other->id() < cell->id() &&
+            unit_point_in<dim>(mapping, other, x, tolerance))
           return false;
     return true;
   }
@@ -567,11 +572,10 @@ namespace PeriArlequin
   PDZone<dim>::check_clear_of_loaded_boundaries(const double depth) const
   {
     // The boundary faces with a traction or a displacement, from all cells this rank knows
-    // (artificial ones too: without manifolds their faces hold the finer faces), each as its
-    // centre and half its diameter, so that centre distance - half diameter bounds the
-    // distance to the face from below.
-    // Only the lattice sites around each face are looked at: the check costs the boundary's
-    // size, not particles times faces.
+    // (artificial ones too: without manifolds their faces hold the finer faces); for each,
+    // the owned particles at the lattice sites around it, with centre distance - half the
+    // face's diameter bounding the distance to the face from below. The check costs the
+    // boundary's size, not particles times faces.
     const auto   x     = ghosts.reference_positions();
     bool         close = false;
     Point<dim>   where;

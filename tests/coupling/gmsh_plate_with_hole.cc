@@ -15,7 +15,9 @@
 //    horizons of a pole, none near the hole's left and right ends; and not before the waves
 //    from both ends meet at the hole (each alone gives at most about 3 x 4 MPa there, below
 //    the bonds' critical stress E s_c = 18 MPa): t_init > 0.05 m / c = 8.98 us
-//    (c = sqrt(E / (rho (1 - nu^2))), plane stress);
+//    (c = sqrt(E / (rho (1 - nu^2))), plane stress); and before 0.05 m / c + 3 us: the two
+//    fronts have crossed the hole 2 r / c = 2.2 us after they meet, and with them the
+//    superposed 8 MPa, concentrated at the poles to well above 18 MPa, is there;
 //  - on 2 ranks the energy history (broken bonds included) equals 1 rank to 1e-10 of each
 //    column's magnitude (sums in another order), and bonds broke in that run.
 

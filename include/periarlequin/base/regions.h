@@ -27,6 +27,13 @@ namespace PeriArlequin
     /** Per-axis gaps between this box and @p other (0 where they overlap in that axis). */
     Tensor<1, dim>
     gap(const Box<dim> &other) const;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &lower &upper;
+    }
   };
 
   /**
@@ -54,6 +61,14 @@ namespace PeriArlequin
      */
     void
     coalesce(const double tolerance);
+
+    /** The boxes, for a checkpoint. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &boxes;
+    }
 
     /** Parse the text of @p parameter (named in errors) into a region. */
     static Region<dim>
