@@ -263,7 +263,7 @@ namespace PeriArlequin
                   sample_line,
                   Patterns::Anything(),
                   "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
-                  "<base>_line_<step>.csv with the displacement of the FE nodes on it and of "
+                  "<base>_line_<step>.csv with the displacement and velocity of the FE nodes on it and "
                   "the PD particles within half a lattice spacing of it. Empty: none.");
       entries.add("Monitor region",
                   monitor_region,

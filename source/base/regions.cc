@@ -11,7 +11,7 @@ namespace PeriArlequin
 {
   namespace
   {
-    /** Split "a, b : c, d" into points of @p dim coordinates each. */
+    /** Split "a, b : c, d" into points of @p dim coordinates each; @p n_points 0: any number. */
     template <int dim>
     std::vector<Point<dim>>
     parse_points(const std::string &text,
@@ -39,11 +39,13 @@ namespace PeriArlequin
         {
           points.clear();
         }
-      if (points.size() != n_points)
+      if (n_points == 0 ? points.empty() : points.size() != n_points)
         throw_invalid_parameter(parameter,
                                 text,
-                                what + ": " + std::to_string(n_points) + " points of " +
-                                  std::to_string(dim) + " coordinates separated by ':'");
+                                what + ": " +
+                                  (n_points == 0 ? "one or more" : std::to_string(n_points)) +
+                                  " points of " + std::to_string(dim) +
+                                  " coordinates separated by ':'");
       return points;
     }
   } // namespace
@@ -64,6 +66,13 @@ namespace PeriArlequin
   {
     const auto points = parse_points<dim>(text, 2, parameter, "a segment");
     return {points[0], points[1]};
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  parse_point_list(const std::string &text, const std::string &parameter)
+  {
+    return parse_points<dim>(text, 0, parameter, "a list of points");
   }
 
   template <int dim>
@@ -251,6 +260,10 @@ namespace PeriArlequin
   parse_segment<2>(const std::string &, const std::string &);
   template std::pair<Point<3>, Point<3>>
   parse_segment<3>(const std::string &, const std::string &);
+  template std::vector<Point<2>>
+  parse_point_list<2>(const std::string &, const std::string &);
+  template std::vector<Point<3>>
+  parse_point_list<3>(const std::string &, const std::string &);
   template struct Box<2>;
   template struct Box<3>;
   template struct Region<2>;

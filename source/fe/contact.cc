@@ -4,6 +4,7 @@
 #include <periarlequin/fe/contact.h>
 #include <periarlequin/fe/fe_zone.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -56,31 +57,68 @@ namespace PeriArlequin
       boundary_ids.insert(id);
   }
 
-  template <int dim>
-  void
-  RigidWallContact<dim>::initialize(const FEZone<dim> &zone)
+  namespace
   {
-    communicator = zone.get_dof_handler().get_communicator();
-    const unsigned int n_faces = 2 * dim;
-    for (const unsigned int id : boundary_ids)
-      if (id >= n_faces)
-        throw_invalid_parameter("Contact/rigid wall/Boundary ids",
-                                std::to_string(id),
-                                "ids of the box's faces, 0 to " + std::to_string(n_faces - 1) +
-                                  " (x faces 0/1, y 2/3, z 4/5), or empty for all");
+    /** A set of ids as a parameter list. */
+    std::string
+    prm_list(const std::set<unsigned int> &ids)
+    {
+      std::string text;
+      for (const unsigned int id : ids)
+        text += (text.empty() ? "" : ", ") + std::to_string(id);
+      return text;
+    }
 
-    // The owned boundary nodes: a vertex's dim DoFs, one per component (FE_Q(1)^dim), found
-    // from the vertex itself so that the grouping is exact.
-    const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
-    std::map<types::global_dof_index, Node> found;
+    /** Refuse boundary ids the mesh does not have, naming @p parameter. */
+    template <int dim>
+    void
+    check_boundary_ids(const FEZone<dim>            &zone,
+                       const std::set<unsigned int> &ids,
+                       const std::string            &parameter)
+    {
+      const auto present = zone.get_dof_handler().get_triangulation().get_boundary_ids();
+      for (const unsigned int id : ids)
+        if (std::find(present.begin(), present.end(), id) == present.end())
+          {
+            std::ostringstream allowed;
+            allowed << "boundary ids the mesh has (";
+            for (unsigned int k = 0; k < present.size(); ++k)
+              allowed << (k > 0 ? ", " : "") << present[k];
+            allowed << "; a box has 0/1 on its x faces, 2/3 on y, 4/5 on z)";
+            throw_invalid_parameter(parameter, std::to_string(id), allowed.str());
+          }
+    }
+
+    /** Contact acts on vertices: FE_Q(1)^dim with lumped masses. */
+    template <int dim>
+    void
+    check_linear_elements(const FEZone<dim> &zone, const std::string &model)
+    {
+      for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
+          {
+            AssertThrow(cell->get_fe().degree == 1,
+                        ExcMessage("Invalid input: 'Contact/Model' = " + model +
+                                   " needs 'Finite elements/Polynomial degree' = 1 (lumped "
+                                   "vertex masses)."));
+            return;
+          }
+    }
+  } // namespace
+
+  template <int dim>
+  std::map<types::global_dof_index, BoundaryVertex<dim>>
+  boundary_vertices(const FEZone<dim>            &zone,
+                    const std::set<unsigned int> &boundary_ids,
+                    const std::string            &parameter)
+  {
+    check_boundary_ids(zone, boundary_ids, parameter);
+    // Ghost cells too: a vertex's owner may see its boundary face only as a ghost.
+    std::map<types::global_dof_index, BoundaryVertex<dim>> found;
     for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
       {
-        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0 ||
-            !cell->at_boundary())
+        if (cell->is_artificial() || cell->get_fe().n_dofs_per_cell() == 0 || !cell->at_boundary())
           continue;
-        AssertThrow(cell->get_fe().degree == 1,
-                    ExcMessage("Invalid input: 'Contact/Model' = rigid wall needs 'Finite "
-                               "elements/Polynomial degree' = 1 (lumped vertex masses)."));
         for (const unsigned int f : cell->face_indices())
           {
             if (!cell->at_boundary(f) ||
@@ -88,21 +126,35 @@ namespace PeriArlequin
               continue;
             for (const unsigned int v : cell->face(f)->vertex_indices())
               {
-                const auto first = cell->face(f)->vertex_dof_index(v, 0, cell->active_fe_index());
-                if (!owned.is_element(first))
-                  continue;
-                Node node;
-                node.position = cell->face(f)->vertex(v);
+                BoundaryVertex<dim> vertex;
+                vertex.position = cell->face(f)->vertex(v);
                 for (unsigned int d = 0; d < dim; ++d)
-                  node.dofs[d] = owned.index_within_set(
-                    cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index()));
-                found[first] = node;
+                  vertex.dofs[d] = cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index());
+                found[vertex.dofs[0]] = vertex;
               }
           }
       }
+    return found;
+  }
+
+  template <int dim>
+  void
+  RigidWallContact<dim>::initialize(const FEZone<dim> &zone)
+  {
+    communicator = zone.get_dof_handler().get_communicator();
+    check_linear_elements(zone, "rigid wall");
+    const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
     nodes.clear();
-    for (const auto &entry : found)
-      nodes.push_back(entry.second);
+    for (const auto &[first, vertex] :
+         boundary_vertices(zone, boundary_ids, "Contact/rigid wall/Boundary ids"))
+      if (owned.is_element(first))
+        {
+          Node node;
+          node.position = vertex.position;
+          for (unsigned int d = 0; d < dim; ++d)
+            node.dofs[d] = owned.index_within_set(vertex.dofs[d]);
+          nodes.push_back(node);
+        }
 
     AssertThrow(Utilities::MPI::sum(nodes.size(), communicator) > 0,
                 ExcMessage("Invalid input: 'Contact/rigid wall/Boundary ids' selects no FE "
@@ -185,10 +237,446 @@ namespace PeriArlequin
     return Utilities::MPI::sum(local_touching, communicator);
   }
 
+  template <int dim>
+  void
+  ElasticTargetContact<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Striker boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0), 0),
+                      "The boundaries of the moving body whose vertices may touch the target "
+                      "(a mesh file's physical tags; a box's faces are 0 to 2 dim - 1).");
+    prm.declare_entry("Target boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0), 0),
+                      "The boundaries of the target whose faces the striker may touch; they "
+                      "must belong to another body than the striker's (no shared vertex).");
+  }
+
+  template <int dim>
+  void
+  ElasticTargetContact<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const auto read = [&](const std::string &name, std::set<unsigned int> &ids) {
+      ids.clear();
+      for (const int id : Utilities::string_to_int(Utilities::split_string_list(prm.get(name))))
+        ids.insert(id);
+      if (ids.empty())
+        throw_invalid_parameter("Contact/elastic target/" + name,
+                                "",
+                                "a non-empty list of boundary ids");
+    };
+    read("Striker boundary ids", striker_ids);
+    read("Target boundary ids", target_ids);
+    for (const unsigned int id : striker_ids)
+      if (target_ids.count(id))
+        throw_invalid_parameter("Contact/elastic target/Target boundary ids",
+                                std::to_string(id),
+                                "ids other than the striker's (the two bodies' contact "
+                                "boundaries must differ)");
+  }
+
+  namespace
+  {
+    /** Positions in lexicographic order (x first), to sort nodes the same on every partition. */
+    template <int dim>
+    bool
+    position_before(const Point<dim> &a, const Point<dim> &b)
+    {
+      for (int d = dim - 1; d >= 0; --d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    }
+
+    /** The shape values of a Q1 face (2 or 4 vertices, deal.II's order) at @p xi. */
+    template <int dim>
+    std::vector<double>
+    face_shape_values(const std::array<double, 2> &xi)
+    {
+      if (dim == 2)
+        return {1 - xi[0], xi[0]};
+      return {(1 - xi[0]) * (1 - xi[1]), xi[0] * (1 - xi[1]), (1 - xi[0]) * xi[1], xi[0] * xi[1]};
+    }
+
+    /**
+     * The closest point of a Q1 face (@p x its vertices) to @p p: its face coordinates,
+     * found by Gauss-Newton (exact in one step on a parallelogram), and the face's unit
+     * normal there, oriented along @p outward.
+     */
+    template <int dim>
+    std::pair<std::array<double, 2>, Tensor<1, dim>>
+    project_onto_face(const std::vector<Point<dim>> &x,
+                      const Point<dim>              &p,
+                      const Tensor<1, dim>          &outward)
+    {
+      std::array<double, 2>          xi = {{0.5, 0.5}};
+      std::array<Tensor<1, dim>, 2> tangent;
+      for (unsigned int iteration = 0; iteration < 20; ++iteration)
+        {
+          Point<dim> position;
+          const auto N = face_shape_values<dim>(xi);
+          for (unsigned int j = 0; j < x.size(); ++j)
+            position += N[j] * Tensor<1, dim>(x[j]);
+          if (dim == 2)
+            tangent[0] = x[1] - x[0];
+          else
+            {
+              tangent[0] = (1 - xi[1]) * (x[1] - x[0]) + xi[1] * (x[3] - x[2]);
+              tangent[1] = (1 - xi[0]) * (x[2] - x[0]) + xi[0] * (x[3] - x[1]);
+            }
+          const Tensor<1, dim> r = p - position;
+          std::array<double, 2> step = {{0, 0}};
+          if (dim == 2)
+            step[0] = (r * tangent[0]) / (tangent[0] * tangent[0]);
+          else
+            {
+              const double a = tangent[0] * tangent[0], b = tangent[0] * tangent[1],
+                           c = tangent[1] * tangent[1], det = a * c - b * b;
+              const double r0 = r * tangent[0], r1 = r * tangent[1];
+              step[0] = (c * r0 - b * r1) / det;
+              step[1] = (a * r1 - b * r0) / det;
+            }
+          xi[0] += step[0];
+          xi[1] += step[1];
+          if (std::abs(step[0]) + std::abs(step[1]) < 1e-14)
+            break;
+        }
+      Tensor<1, dim> normal;
+      if constexpr (dim == 2)
+        normal = Tensor<1, dim>({tangent[0][1], -tangent[0][0]});
+      else
+        normal = cross_product_3d(tangent[0], tangent[1]);
+      normal /= normal.norm();
+      if (normal * outward < 0)
+        normal *= -1;
+      return {xi, normal};
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ElasticTargetContact<dim>::initialize(const FEZone<dim> &zone)
+  {
+    communicator = zone.get_dof_handler().get_communicator();
+    check_linear_elements(zone, "elastic target");
+    const IndexSet    &owned     = zone.get_dof_handler().locally_owned_dofs();
+    const unsigned int n_face_vertices = GeometryInfo<dim>::vertices_per_face;
+
+    // Every rank's owned striker vertices and owned target faces (each boundary face belongs
+    // to one owned cell), gathered on all ranks.
+    std::vector<double> mine;
+    const auto          add_vertex = [&](const BoundaryVertex<dim> &vertex) {
+      for (unsigned int d = 0; d < dim; ++d)
+        mine.push_back(vertex.dofs[d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        mine.push_back(vertex.position[d]);
+    };
+    for (const auto &[first, vertex] :
+         boundary_vertices(zone, striker_ids, "Contact/elastic target/Striker boundary ids"))
+      if (owned.is_element(first))
+        add_vertex(vertex);
+    std::vector<double> faces;
+    check_boundary_ids(zone, target_ids, "Contact/elastic target/Target boundary ids");
+    for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) && target_ids.count(cell->face(f)->boundary_id()))
+            {
+              for (unsigned int v = 0; v < n_face_vertices; ++v)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    faces.push_back(cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index()));
+                  for (unsigned int d = 0; d < dim; ++d)
+                    faces.push_back(cell->face(f)->vertex(v)[d]);
+                }
+              const Tensor<1, dim> outward = cell->face(f)->center() - cell->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                faces.push_back(outward[d]);
+            }
+    const auto all_striker = Utilities::MPI::all_gather(communicator, mine);
+    const auto all_faces   = Utilities::MPI::all_gather(communicator, faces);
+
+    // The striker vertices, then the target's vertices, as one sorted list of nodes.
+    const unsigned int vertex_width = 2 * dim, face_width = n_face_vertices * vertex_width + dim;
+    const auto read_vertex = [&](const std::vector<double> &data, const unsigned int at) {
+      BoundaryVertex<dim> vertex;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          vertex.dofs[d]     = static_cast<types::global_dof_index>(data[at + d]);
+          vertex.position[d] = data[at + dim + d];
+        }
+      return vertex;
+    };
+    std::map<types::global_dof_index, BoundaryVertex<dim>> striker, target;
+    for (const auto &part : all_striker)
+      for (unsigned int at = 0; at + vertex_width <= part.size(); at += vertex_width)
+        {
+          const auto vertex     = read_vertex(part, at);
+          striker[vertex.dofs[0]] = vertex;
+        }
+    struct Face
+    {
+      std::vector<types::global_dof_index> first_dofs;
+      std::vector<Point<dim>>              vertices;
+      Tensor<1, dim>                       outward;
+    };
+    std::vector<Face> target_faces;
+    for (const auto &part : all_faces)
+      for (unsigned int at = 0; at + face_width <= part.size(); at += face_width)
+        {
+          Face face;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            {
+              const auto vertex = read_vertex(part, at + v * vertex_width);
+              if (striker.count(vertex.dofs[0]))
+                throw_invalid_parameter("Contact/elastic target/Target boundary ids",
+                                        prm_list(target_ids),
+                                        "boundaries of another body than the striker's: "
+                                        "the target shares a vertex with the striker's "
+                                        "boundary (mesh the two bodies apart)");
+              target[vertex.dofs[0]] = vertex;
+              face.first_dofs.push_back(vertex.dofs[0]);
+              face.vertices.push_back(vertex.position);
+            }
+          for (unsigned int d = 0; d < dim; ++d)
+            face.outward[d] = part[at + n_face_vertices * vertex_width + d];
+          target_faces.push_back(face);
+        }
+    AssertThrow(!striker.empty(),
+                ExcMessage("Invalid input: 'Contact/elastic target/Striker boundary ids' "
+                           "selects no FE boundary vertex; allowed: ids of boundaries that "
+                           "carry FE cells."));
+    AssertThrow(!target_faces.empty(),
+                ExcMessage("Invalid input: 'Contact/elastic target/Target boundary ids' "
+                           "selects no FE boundary face; allowed: ids of boundaries that "
+                           "carry FE cells."));
+
+    nodes.clear();
+    for (const auto *set : {&striker, &target})
+      for (const auto &entry : *set)
+        nodes.push_back(entry.second);
+    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
+      return position_before(a.position, b.position);
+    });
+    std::map<types::global_dof_index, unsigned int> node_of;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      node_of[nodes[k].dofs[0]] = k;
+
+    // Pair each striker vertex with the face it projects onto, the nearest if several.
+    face_size = std::numeric_limits<double>::max();
+    for (const auto &face : target_faces)
+      for (unsigned int v = 1; v < n_face_vertices; ++v)
+        face_size = std::min(face_size, face.vertices[v].distance(face.vertices[0]));
+    pairs.clear();
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        if (!striker.count(nodes[k].dofs[0]))
+          continue;
+        double best = std::numeric_limits<double>::max();
+        Pair   pair;
+        for (const auto &face : target_faces)
+          {
+            const auto [xi, normal] = project_onto_face(face.vertices, nodes[k].position, face.outward);
+            const double tolerance = 1e-10;
+            if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
+                (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
+              continue;
+            const auto N = face_shape_values<dim>(xi);
+            Point<dim> foot;
+            for (unsigned int j = 0; j < n_face_vertices; ++j)
+              foot += N[j] * Tensor<1, dim>(face.vertices[j]);
+            const double distance = (nodes[k].position - foot) * normal;
+            if (std::abs(distance) < std::abs(best))
+              {
+                best = distance;
+                pair.striker = k;
+                pair.normal  = normal;
+                pair.face_nodes.clear();
+                for (const auto first : face.first_dofs)
+                  pair.face_nodes.push_back(node_of[first]);
+                pair.weights = N;
+              }
+          }
+        if (best != std::numeric_limits<double>::max())
+          pairs.push_back(pair);
+      }
+    AssertThrow(!pairs.empty(),
+                ExcMessage("Invalid input: no vertex of 'Contact/elastic target/Striker "
+                           "boundary ids' lies in front of a face of 'Target boundary ids' "
+                           "(contact pairs a striker vertex with the target face it projects "
+                           "onto, in the reference configuration); allowed: boundaries that "
+                           "face each other."));
+
+    // Which nodes this rank owns, and every rank's list, in the order of the gathered values.
+    owned_nodes.clear();
+    owned_dofs.clear();
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      if (owned.is_element(nodes[k].dofs[0]))
+        {
+          owned_nodes.push_back(k);
+          std::array<unsigned int, dim> local;
+          for (unsigned int d = 0; d < dim; ++d)
+            local[d] = owned.index_within_set(nodes[k].dofs[d]);
+          owned_dofs.push_back(local);
+        }
+    nodes_of_rank = Utilities::MPI::all_gather(communicator, owned_nodes);
+    striker_owned_here.assign(nodes.size(), false);
+    for (const unsigned int k : owned_nodes)
+      striker_owned_here[k] = striker.count(nodes[k].dofs[0]) > 0;
+
+    // The bodies must start apart.
+    std::vector<double> state;
+    const auto         &s = zone.get_state();
+    gather_state(zone.lumped_mass(), s.displacement, s.velocity, s.acceleration, state);
+    const unsigned int width = 3 * dim + 1;
+    for (const auto &pair : pairs)
+      {
+        Tensor<1, dim> gap_vector = nodes[pair.striker].position - Point<dim>();
+        for (unsigned int d = 0; d < dim; ++d)
+          gap_vector[d] += state[pair.striker * width + d];
+        for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
+          {
+            const unsigned int n = pair.face_nodes[j];
+            for (unsigned int d = 0; d < dim; ++d)
+              gap_vector[d] -= pair.weights[j] * (nodes[n].position[d] + state[n * width + d]);
+          }
+        const double gap = gap_vector * pair.normal;
+        if (gap < -1e-9 * face_size)
+          {
+            std::ostringstream where;
+            where << "boundaries of two bodies that are apart at t = 0: the striker's vertex at "
+                  << nodes[pair.striker].position << " lies " << -gap
+                  << " m inside the target";
+            throw_invalid_parameter("Contact/elastic target/Striker boundary ids",
+                                    prm_list(striker_ids),
+                                    where.str());
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  ElasticTargetContact<dim>::gather_state(const typename Contact<dim>::VectorType &mass,
+                                          const typename Contact<dim>::VectorType &u,
+                                          const typename Contact<dim>::VectorType &v,
+                                          const typename Contact<dim>::VectorType &a,
+                                          std::vector<double>                     &state) const
+  {
+    const unsigned int  width = 3 * dim + 1;
+    std::vector<double> mine;
+    mine.reserve(owned_nodes.size() * width);
+    for (const auto &local : owned_dofs)
+      {
+        for (const auto *vector : {&u, &v, &a})
+          for (unsigned int d = 0; d < dim; ++d)
+            mine.push_back(vector->local_element(local[d]));
+        mine.push_back(mass.local_element(local[0]));
+      }
+    const auto all = Utilities::MPI::all_gather(communicator, mine);
+    state.assign(nodes.size() * width, 0.);
+    for (unsigned int rank = 0; rank < all.size(); ++rank)
+      for (unsigned int k = 0; k < nodes_of_rank[rank].size(); ++k)
+        std::copy(all[rank].begin() + k * width,
+                  all[rank].begin() + (k + 1) * width,
+                  state.begin() + nodes_of_rank[rank][k] * width);
+  }
+
+  template <int dim>
+  void
+  ElasticTargetContact<dim>::enforce(const double                             dt,
+                                     const typename Contact<dim>::VectorType &mass,
+                                     const typename Contact<dim>::VectorType &u,
+                                     const typename Contact<dim>::VectorType &v,
+                                     typename Contact<dim>::VectorType       &a,
+                                     typename Contact<dim>::VectorType       &applied_force)
+  {
+    std::vector<double> state;
+    gather_state(mass, u, v, a, state);
+    const unsigned int width = 3 * dim + 1;
+    // The next positions x = X + u + dt v + dt^2 a, and the contact's change of them.
+    std::vector<Point<dim>>     next(nodes.size());
+    std::vector<Tensor<1, dim>> shift(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        next[k][d] = nodes[k].position[d] + state[k * width + d] +
+                     dt * state[k * width + dim + d] + dt * dt * state[k * width + 2 * dim + d];
+    const auto mass_of = [&](const unsigned int k) { return state[k * width + 3 * dim]; };
+
+    std::vector<double> lambda(pairs.size(), 0.);
+    for (unsigned int sweep = 0; sweep < 100; ++sweep)
+      {
+        double largest = 0;
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            const Pair    &pair = pairs[p];
+            Tensor<1, dim> gap_vector = next[pair.striker] + shift[pair.striker] - Point<dim>();
+            double         compliance = 1. / mass_of(pair.striker);
+            for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
+              {
+                const unsigned int n = pair.face_nodes[j];
+                gap_vector -= pair.weights[j] * (next[n] + shift[n] - Point<dim>());
+                compliance += pair.weights[j] * pair.weights[j] / mass_of(n);
+              }
+            const double gap    = gap_vector * pair.normal;
+            const double change = std::max(-lambda[p], -gap / (dt * dt * compliance));
+            if (change == 0)
+              continue;
+            lambda[p] += change;
+            const Tensor<1, dim> impulse = dt * dt * change * pair.normal;
+            shift[pair.striker] += impulse / mass_of(pair.striker);
+            for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
+              shift[pair.face_nodes[j]] -= pair.weights[j] * impulse / mass_of(pair.face_nodes[j]);
+            largest = std::max(largest, std::abs(change) * dt * dt * compliance);
+          }
+        if (largest <= 1e-12 * face_size)
+          break;
+      }
+
+    local_force    = Tensor<1, dim>();
+    local_touching = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (lambda[p] > 0 && striker_owned_here[pairs[p].striker])
+        {
+          local_force += lambda[p] * pairs[p].normal;
+          ++local_touching;
+        }
+    for (unsigned int k = 0; k < owned_nodes.size(); ++k)
+      {
+        const Tensor<1, dim> &change = shift[owned_nodes[k]];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int i = owned_dofs[k][d];
+            a.local_element(i) += change[d] / (dt * dt);
+            applied_force.local_element(i) += mass.local_element(i) * change[d] / (dt * dt);
+          }
+      }
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticTargetContact<dim>::total_force() const
+  {
+    return Utilities::MPI::sum(local_force, communicator);
+  }
+
+  template <int dim>
+  unsigned int
+  ElasticTargetContact<dim>::n_touching_nodes() const
+  {
+    return Utilities::MPI::sum(local_touching, communicator);
+  }
+
   template class Contact<2>;
   template class Contact<3>;
   template class RigidWallContact<2>;
   template class RigidWallContact<3>;
+  template class ElasticTargetContact<2>;
+  template class ElasticTargetContact<3>;
+  template std::map<types::global_dof_index, BoundaryVertex<2>>
+  boundary_vertices(const FEZone<2> &, const std::set<unsigned int> &, const std::string &);
+  template std::map<types::global_dof_index, BoundaryVertex<3>>
+  boundary_vertices(const FEZone<3> &, const std::set<unsigned int> &, const std::string &);
   template class PluginRegistry<Contact<2>>;
   template class PluginRegistry<Contact<3>>;
 
@@ -196,4 +684,9 @@ namespace PeriArlequin
                                 "rigid wall",
                                 "frictionless unilateral contact of FE boundary nodes with a "
                                 "fixed plane, enforced kinematically")
+  PERIARLEQUIN_REGISTER_CONTACT(ElasticTargetContact,
+                                "elastic target",
+                                "frictionless unilateral contact between two FE bodies of the "
+                                "mesh (striker vertices against target faces), enforced "
+                                "kinematically, momentum-conserving")
 } // namespace PeriArlequin

@@ -116,6 +116,96 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  Probes<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Points",
+                      "",
+                      Patterns::Anything(),
+                      "Points 'x, y[, z] : x, y[, z] : ...' [m] whose velocity is recorded.");
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    points_text = prm.get("Points");
+    points      = parse_point_list<dim>(points_text, "Postprocess/probes/Points");
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const FEZone<dim> *fe = simulator.has_fe_zone() ? &simulator.get_fe_zone() : nullptr;
+    const PDZone<dim> *pd = simulator.get_pd_zone();
+    const MPI_Comm     communicator =
+      fe ? fe->get_dof_handler().get_communicator() : pd->get_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    typename FEZone<dim>::VectorType velocity;
+    if (fe)
+      {
+        fe->initialize_vector(velocity);
+        velocity.copy_locally_owned_data_from(fe->get_state().velocity);
+        velocity.update_ghost_values();
+      }
+    const char *axes[3] = {"x", "y", "z"};
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        // The FE field, from the lowest rank whose cells hold the point.
+        const auto     in_fe = fe ? fe->point_value(velocity, points[k]) : std::nullopt;
+        const unsigned int owner =
+          Utilities::MPI::min(in_fe ? rank : n_ranks, communicator);
+        Tensor<1, dim> value;
+        if (owner < n_ranks)
+          value = Utilities::MPI::sum(owner == rank ? *in_fe : Tensor<1, dim>(), communicator);
+        else
+          {
+            // The nearest particle: each rank's candidate (distance, position, velocity),
+            // then the same choice on every rank.
+            std::vector<double> candidate;
+            if (pd)
+              {
+                const auto &positions = pd->reference_positions();
+                const auto  key       = [&](const unsigned int i) {
+                  std::vector<double> values{positions[i].distance(points[k])};
+                  for (int d = dim - 1; d >= 0; --d)
+                    values.push_back(positions[i][d]);
+                  return values;
+                };
+                for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
+                  if (const auto here = key(i);
+                      candidate.empty() ||
+                      std::lexicographical_compare(
+                        here.begin(), here.end(), candidate.begin(), candidate.begin() + 1 + dim))
+                    {
+                      candidate = here;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        candidate.push_back(pd->get_state().velocities()[i][d]);
+                    }
+              }
+            const auto all = Utilities::MPI::all_gather(communicator, candidate);
+            const std::vector<double> *chosen = nullptr;
+            for (const auto &c : all)
+              if (!c.empty() &&
+                  (!chosen || std::lexicographical_compare(
+                                c.begin(), c.begin() + 1 + dim, chosen->begin(), chosen->begin() + 1 + dim)))
+                chosen = &c;
+            if (!chosen)
+              throw_invalid_parameter("Postprocess/probes/Points",
+                                      points_text,
+                                      "points in the model (point " + std::to_string(k) +
+                                        " lies in no FE cell and the model has no PD particle)");
+            for (unsigned int d = 0; d < dim; ++d)
+              value[d] = (*chosen)[1 + dim + d];
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          history.add_value("probe_" + std::to_string(k) + "_v_" + axes[d], value[d]);
+      }
+  }
+
+  template <int dim>
+  void
   LinearMomentum<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
     Tensor<1, dim> momentum;
@@ -170,6 +260,8 @@ namespace PeriArlequin
   template class BondStretches<3>;
   template class ContactForces<2>;
   template class ContactForces<3>;
+  template class Probes<2>;
+  template class Probes<3>;
   template class LinearMomentum<2>;
   template class LinearMomentum<3>;
   template class ZoneSizes<2>;
@@ -192,6 +284,10 @@ namespace PeriArlequin
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(ContactForces,
                                       "contact forces",
                                       "total contact force on the body and nodes in contact")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(Probes,
+                                      "probes",
+                                      "velocity at points (FE field, or the nearest PD particle "
+                                      "in the pure PD zone)")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(LinearMomentum,
                                       "linear momentum",
                                       "linear momentum of both zones, per component")

@@ -80,6 +80,11 @@ namespace PeriArlequin
   std::pair<Point<dim>, Point<dim>>
   parse_segment(const std::string &text, const std::string &parameter);
 
+  /** Parse points "x0, y0 : x1, y1 : ..." (one or more) from the text of @p parameter. */
+  template <int dim>
+  std::vector<Point<dim>>
+  parse_point_list(const std::string &text, const std::string &parameter);
+
   /**
    * A pre-crack: a segment in 2D ("x0, y0 : x1, y1"), a parallelogram in 3D given by a corner
    * and two edge vectors ("x0, y0, z0 : ax, ay, az : bx, by, bz"). Bonds whose reference

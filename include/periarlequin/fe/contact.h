@@ -9,6 +9,7 @@
 #include <periarlequin/base/plugin_registry.h>
 
 #include <array>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -79,6 +80,26 @@ namespace PeriArlequin
   extern template class PluginRegistry<Contact<2>>;
   extern template class PluginRegistry<Contact<3>>;
 
+  /** A vertex of the FE boundary: its DoFs (global indices, one per component) and position. */
+  template <int dim>
+  struct BoundaryVertex
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    Point<dim>                               position;
+  };
+
+  /**
+   * The vertices of the faces with boundary id in @p boundary_ids (all if empty) of the
+   * locally owned cells that carry FE DoFs, by their first DoF; refuses ids the mesh does not
+   * have, naming @p parameter, and elements other than FE_Q(1)^dim (contact needs lumped
+   * vertex masses). A vertex on a face between two ranks' cells is found on both.
+   */
+  template <int dim>
+  std::map<types::global_dof_index, BoundaryVertex<dim>>
+  boundary_vertices(const FEZone<dim>            &zone,
+                    const std::set<unsigned int> &boundary_ids,
+                    const std::string            &parameter);
+
   /**
    * Frictionless unilateral contact with a fixed rigid plane, enforced kinematically as
    * explicit codes do (a forward-increment Lagrange multiplier): with lumped masses each node
@@ -129,6 +150,87 @@ namespace PeriArlequin
     /** This rank's contact force and touching nodes at the last enforce(). */
     Tensor<1, dim>          local_force;
     unsigned int            local_touching = 0;
+  };
+
+  /**
+   * Frictionless unilateral contact between two FE bodies of the same mesh, a striker and a
+   * target (boundary ids of each), enforced kinematically like the rigid wall but between
+   * nodes and faces: each vertex s of the striker's contact boundary is paired, once, with
+   * the target face that it projects onto in the reference configuration (small sliding, as
+   * the linear elastic bodies of the FE zone are), at the point with face shape values N_j,
+   * along that face's outward normal n. The gap of the next positions, g = n . (x_s -
+   * sum_j N_j x_j) with x = X + u_{n+1} + dt v_{n+1/2} + dt^2 a_{n+1}, must not be negative:
+   * pair k gets the force lambda_k >= 0, on s along n and on the face's nodes along -n with
+   * the weights N_j, the smallest that closes the gap, lambda_k = -g / (dt^2 (1/m_s + sum_j
+   * N_j^2 / m_j)). Pairs that share target nodes are solved together by Gauss-Seidel sweeps
+   * (one sweep where the meshes match node to node). Momentum is conserved exactly (the
+   * forces on the two bodies cancel, sum_j N_j = 1); energy is lost only as the relative
+   * normal kinetic energy of the nodes that meet (m_s m_j / (m_s + m_j) per pair and impact),
+   * which the contact work records. The bodies separate when they pull apart.
+   *
+   * The nodes and faces involved are few (a contact surface): their state is gathered on
+   * every rank each step and every rank solves the same pairs in the same order (sorted by
+   * position), so the contact forces do not depend on the partition.
+   */
+  template <int dim>
+  class ElasticTargetContact : public Contact<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm) override;
+    void
+    initialize(const FEZone<dim> &zone) override;
+    void
+    enforce(const double                         time_step,
+            const typename Contact<dim>::VectorType &mass,
+            const typename Contact<dim>::VectorType &displacement,
+            const typename Contact<dim>::VectorType &velocity,
+            typename Contact<dim>::VectorType       &acceleration,
+            typename Contact<dim>::VectorType       &applied_force) override;
+    Tensor<1, dim>
+    total_force() const override;
+    unsigned int
+    n_touching_nodes() const override;
+
+  private:
+    /** A striker vertex and the target face it projects onto. */
+    struct Pair
+    {
+      unsigned int              striker;
+      std::vector<unsigned int> face_nodes;
+      std::vector<double>       weights;
+      Tensor<1, dim>            normal;
+    };
+
+    /**
+     * Fill @p state with u, v, a and the mass of every involved node (3 dim + 1 numbers a
+     * node, in node order) from the owned entries of every rank.
+     */
+    void
+    gather_state(const typename Contact<dim>::VectorType &mass,
+                 const typename Contact<dim>::VectorType &displacement,
+                 const typename Contact<dim>::VectorType &velocity,
+                 const typename Contact<dim>::VectorType &acceleration,
+                 std::vector<double>                     &state) const;
+
+    std::set<unsigned int>   striker_ids, target_ids;
+    MPI_Comm                 communicator;
+    /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
+    std::vector<BoundaryVertex<dim>> nodes;
+    std::vector<Pair>                pairs;
+    /** The nodes whose DoFs this rank owns, with their local indices. */
+    std::vector<unsigned int>                  owned_nodes;
+    std::vector<std::array<unsigned int, dim>> owned_dofs;
+    /** The owned nodes of every rank, in the order of the gathered values. */
+    std::vector<std::vector<unsigned int>> nodes_of_rank;
+    /** Striker nodes this rank owns (a pair's force counts where its striker node lives). */
+    std::vector<bool> striker_owned_here;
+    /** The smallest target face diameter [m]: the scale of the gap tolerances. */
+    double            face_size = 0;
+    Tensor<1, dim>    local_force;
+    unsigned int      local_touching = 0;
   };
 } // namespace PeriArlequin
 

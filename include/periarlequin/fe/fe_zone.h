@@ -19,6 +19,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace PeriArlequin
@@ -185,6 +186,13 @@ namespace PeriArlequin
     support_points(std::vector<unsigned int> &local_dofs,
                    std::vector<Point<dim>>   &points,
                    std::vector<unsigned int> &components) const;
+
+    /**
+     * The vector field @p ghosted (with up-to-date ghost entries) at @p point if a locally
+     * owned cell with FE DoFs holds it (within 1e-10 in unit coordinates), else nothing.
+     */
+    std::optional<Tensor<1, dim>>
+    point_value(const VectorType &ghosted, const Point<dim> &point) const;
 
     /** Shape a vector with the locally owned and ghost DoFs of this zone. */
     void

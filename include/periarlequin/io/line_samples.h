@@ -12,9 +12,9 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * Displacements along a segment (Output/Sample line) at the output steps: the FE nodes on
+   * Displacements and velocities along a segment (Output/Sample line) at the output steps: the FE nodes on
    * the segment and the PD particles within dx/2 of it, gathered on rank 0 into
-   * \<base\>_line_\<step\>.csv (zone, position, displacement), sorted by zone and position so
+   * \<base\>_line_\<step\>.csv (zone, position, displacement, velocity), sorted by zone and position so
    * that the file does not depend on the partition.
    */
   template <int dim>

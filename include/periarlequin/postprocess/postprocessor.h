@@ -118,6 +118,29 @@ namespace PeriArlequin
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
   };
 
+  /**
+   * Velocity histories at points (Postprocess/probes/Points) [m/s], per component: where an
+   * FE cell holds the point (the FE zone and the overlaps), the FE field there; elsewhere
+   * (the pure PD zone) the nearest PD particle, the lowest in (z, y, x) among equally near
+   * ones, so that the choice does not depend on the partition. Columns probe_<k>_v_<axis>,
+   * k from 0 in the order given.
+   */
+  template <int dim>
+  class Probes : public Postprocessor<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm) override;
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+
+  private:
+    std::string             points_text;
+    std::vector<Point<dim>> points;
+  };
+
   /** Linear momentum of both zones [N s], per component (lumped FE masses, PD particles). */
   template <int dim>
   class LinearMomentum : public Postprocessor<dim>
