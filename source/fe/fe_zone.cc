@@ -320,39 +320,42 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  std::optional<Tensor<1, dim>>
-  FEZone<dim>::point_value(const VectorType &ghosted, const Point<dim> &point) const
+  std::optional<typename FEZone<dim>::PointLocation>
+  FEZone<dim>::locate(const Point<dim> &point) const
   {
-    const double                         tolerance = 1e-10;
-    std::vector<types::global_dof_index> dof_indices;
+    const double tolerance = 1e-10;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0 ||
             !cell->bounding_box().point_inside(point, tolerance * cell->diameter()))
           continue;
-        Point<dim> unit;
         try
           {
-            unit = mapping.transform_real_to_unit_cell(cell, point);
+            const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, point);
+            if (GeometryInfo<dim>::is_inside_unit_cell(unit, tolerance))
+              return PointLocation(cell, unit);
           }
         catch (const typename Mapping<dim>::ExcTransformationFailed &)
-          {
-            continue;
-          }
-        if (!GeometryInfo<dim>::is_inside_unit_cell(unit, tolerance))
-          continue;
-        const auto &fe = cell->get_fe();
-        dof_indices.resize(fe.n_dofs_per_cell());
-        cell->get_dof_indices(dof_indices);
-        Tensor<1, dim> value;
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            value[c] += fe.shape_value_component(i, unit, c) * ghosted(dof_indices[i]);
-          }
-        return value;
+          {}
       }
     return {};
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  FEZone<dim>::point_value(const VectorType &ghosted, const PointLocation &location) const
+  {
+    const auto                          &[cell, unit] = location;
+    const auto                          &fe           = cell->get_fe();
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    cell->get_dof_indices(dof_indices);
+    Tensor<1, dim> value;
+    for (unsigned int i = 0; i < dof_indices.size(); ++i)
+      {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        value[c] += fe.shape_value_component(i, unit, c) * ghosted(dof_indices[i]);
+      }
+    return value;
   }
 
   template <int dim>

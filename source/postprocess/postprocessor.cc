@@ -134,7 +134,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  Probes<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  Probes<dim>::locate(const Simulator<dim> &simulator)
   {
     const FEZone<dim> *fe = simulator.has_fe_zone() ? &simulator.get_fe_zone() : nullptr;
     const PDZone<dim> *pd = simulator.get_pd_zone();
@@ -142,6 +142,69 @@ namespace PeriArlequin
       fe ? fe->get_dof_handler().get_communicator() : pd->get_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    fe_locations.assign(points.size(), std::nullopt);
+    fe_owner.assign(points.size(), n_ranks);
+    particle.assign(points.size(), numbers::invalid_unsigned_int);
+    particle_owner.assign(points.size(), n_ranks);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        // The FE field, from the lowest rank whose cells hold the point.
+        if (fe)
+          fe_locations[k] = fe->locate(points[k]);
+        fe_owner[k] = Utilities::MPI::min(fe_locations[k] ? rank : n_ranks, communicator);
+        if (fe_owner[k] < n_ranks)
+          continue;
+        // The nearest particle, the lowest in (z, y, x) among equally near ones: each rank's
+        // candidate (distance, position), then the same choice on every rank.
+        std::vector<double> candidate;
+        if (pd)
+          {
+            const auto &positions = pd->reference_positions();
+            const auto  key       = [&](const unsigned int i) {
+              std::vector<double> values{positions[i].distance(points[k])};
+              for (int d = dim - 1; d >= 0; --d)
+                values.push_back(positions[i][d]);
+              return values;
+            };
+            for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
+              if (const auto here = key(i); candidate.empty() || here < candidate)
+                {
+                  candidate   = here;
+                  particle[k] = i;
+                }
+          }
+        const auto all = Utilities::MPI::all_gather(communicator, candidate);
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          if (!all[r].empty() &&
+              (particle_owner[k] == n_ranks || all[r] < all[particle_owner[k]]))
+            particle_owner[k] = r;
+        if (particle_owner[k] == n_ranks)
+          throw_invalid_parameter("Postprocess/probes/Points",
+                                  points_text,
+                                  "points in the model (point " + std::to_string(k) +
+                                    " lies in no FE cell and the model has no PD particle)");
+      }
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const FEZone<dim> *fe = simulator.has_fe_zone() ? &simulator.get_fe_zone() : nullptr;
+    const PDZone<dim> *pd = simulator.get_pd_zone();
+    const std::array<std::size_t, 4> zones{{simulator.n_repartitions(),
+                                            simulator.n_converted_cells(),
+                                            fe ? fe->n_dofs() : 0,
+                                            pd ? pd->n_global_particles() : 0}};
+    if (!located || zones != located_for)
+      {
+        locate(simulator);
+        located_for = zones;
+        located     = true;
+      }
+    const MPI_Comm communicator =
+      fe ? fe->get_dof_handler().get_communicator() : pd->get_communicator();
+    const unsigned int               rank = Utilities::MPI::this_mpi_process(communicator);
     typename FEZone<dim>::VectorType velocity;
     if (fe)
       {
@@ -149,59 +212,23 @@ namespace PeriArlequin
         velocity.copy_locally_owned_data_from(fe->get_state().velocity);
         velocity.update_ghost_values();
       }
-    const char *axes[3] = {"x", "y", "z"};
+    // Each point's value from the rank that evaluates it, summed in one reduction.
+    std::vector<double> values(points.size() * dim, 0.);
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        // The FE field, from the lowest rank whose cells hold the point.
-        const auto     in_fe = fe ? fe->point_value(velocity, points[k]) : std::nullopt;
-        const unsigned int owner =
-          Utilities::MPI::min(in_fe ? rank : n_ranks, communicator);
         Tensor<1, dim> value;
-        if (owner < n_ranks)
-          value = Utilities::MPI::sum(owner == rank ? *in_fe : Tensor<1, dim>(), communicator);
-        else
-          {
-            // The nearest particle: each rank's candidate (distance, position, velocity),
-            // then the same choice on every rank.
-            std::vector<double> candidate;
-            if (pd)
-              {
-                const auto &positions = pd->reference_positions();
-                const auto  key       = [&](const unsigned int i) {
-                  std::vector<double> values{positions[i].distance(points[k])};
-                  for (int d = dim - 1; d >= 0; --d)
-                    values.push_back(positions[i][d]);
-                  return values;
-                };
-                for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
-                  if (const auto here = key(i);
-                      candidate.empty() ||
-                      std::lexicographical_compare(
-                        here.begin(), here.end(), candidate.begin(), candidate.begin() + 1 + dim))
-                    {
-                      candidate = here;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        candidate.push_back(pd->get_state().velocities()[i][d]);
-                    }
-              }
-            const auto all = Utilities::MPI::all_gather(communicator, candidate);
-            const std::vector<double> *chosen = nullptr;
-            for (const auto &c : all)
-              if (!c.empty() &&
-                  (!chosen || std::lexicographical_compare(
-                                c.begin(), c.begin() + 1 + dim, chosen->begin(), chosen->begin() + 1 + dim)))
-                chosen = &c;
-            if (!chosen)
-              throw_invalid_parameter("Postprocess/probes/Points",
-                                      points_text,
-                                      "points in the model (point " + std::to_string(k) +
-                                        " lies in no FE cell and the model has no PD particle)");
-            for (unsigned int d = 0; d < dim; ++d)
-              value[d] = (*chosen)[1 + dim + d];
-          }
+        if (fe_owner[k] == rank)
+          value = fe->point_value(velocity, *fe_locations[k]);
+        else if (particle_owner[k] == rank)
+          value = pd->get_state().velocities()[particle[k]];
         for (unsigned int d = 0; d < dim; ++d)
-          history.add_value("probe_" + std::to_string(k) + "_v_" + axes[d], value[d]);
+          values[k * dim + d] = value[d];
       }
+    Utilities::MPI::sum(values, communicator, values);
+    const char *axes[3] = {"x", "y", "z"};
+    for (unsigned int k = 0; k < points.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        history.add_value("probe_" + std::to_string(k) + "_v_" + axes[d], values[k * dim + d]);
   }
 
   template <int dim>

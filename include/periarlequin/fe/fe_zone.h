@@ -187,12 +187,20 @@ namespace PeriArlequin
                    std::vector<Point<dim>>   &points,
                    std::vector<unsigned int> &components) const;
 
+    /** A locally owned cell with FE DoFs and the unit coordinates of a point in it. */
+    using PointLocation =
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>;
+
     /**
-     * The vector field @p ghosted (with up-to-date ghost entries) at @p point if a locally
-     * owned cell with FE DoFs holds it (within 1e-10 in unit coordinates), else nothing.
+     * Where @p point lies if a locally owned cell with FE DoFs holds it (within 1e-10 in
+     * unit coordinates), else nothing.
      */
-    std::optional<Tensor<1, dim>>
-    point_value(const VectorType &ghosted, const Point<dim> &point) const;
+    std::optional<PointLocation>
+    locate(const Point<dim> &point) const;
+
+    /** The vector field @p ghosted (with up-to-date ghost entries) at @p location. */
+    Tensor<1, dim>
+    point_value(const VectorType &ghosted, const PointLocation &location) const;
 
     /** Shape a vector with the locally owned and ghost DoFs of this zone. */
     void

@@ -4,7 +4,11 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <periarlequin/base/plugin_registry.h>
+#include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
+
+#include <array>
+#include <optional>
 
 namespace PeriArlequin
 {
@@ -123,7 +127,8 @@ namespace PeriArlequin
    * FE cell holds the point (the FE zone and the overlaps), the FE field there; elsewhere
    * (the pure PD zone) the nearest PD particle, the lowest in (z, y, x) among equally near
    * ones, so that the choice does not depend on the partition. Columns probe_<k>_v_<axis>,
-   * k from 0 in the order given.
+   * k from 0 in the order given. Where each point lies is found once and again only after
+   * the zones change (a repartition, cells converted to PD).
    */
   template <int dim>
   class Probes : public Postprocessor<dim>
@@ -137,8 +142,21 @@ namespace PeriArlequin
     execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
 
   private:
+    /** Find where every point lies on this rank (the FE cell, else the nearest particle). */
+    void
+    locate(const Simulator<dim> &simulator);
+
     std::string             points_text;
     std::vector<Point<dim>> points;
+    /** What the locations were found for: repartitions, converted cells, FE DoFs, particles. */
+    std::array<std::size_t, 4> located_for{};
+    bool                       located = false;
+    /** Per point: the FE location on this rank, if any, and the rank that evaluates it. */
+    std::vector<std::optional<typename FEZone<dim>::PointLocation>> fe_locations;
+    std::vector<unsigned int>                                      fe_owner;
+    /** Per point without FE: the nearest particle (local index) on the rank that has it. */
+    std::vector<unsigned int> particle;
+    std::vector<unsigned int> particle_owner;
   };
 
   /** Linear momentum of both zones [N s], per component (lumped FE masses, PD particles). */
