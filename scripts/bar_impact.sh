@@ -75,6 +75,43 @@ for run in fe coupled fe-fine coupled-fine; do
 done
 echo "1D theory: contact 2 L / c0 = 39.56 us (+ 1 us to close the gap), rebound 1, fronts at A at 6.43 and 33.13 us (+ 1 us)"
 
+# Point A split at 33 us (before: only what came through the FE end and what the overlap sent
+# back; after: what crossed the PD zone twice), raw and averaged over 2 us (the ringing of
+# the lateral modes removed), both histories interpolated to 0.08 us; and the mean v_x at A
+# over 42-60 us (after the rebound).
+compare() { # compare <run> <reference run>
+  awk -F, -v name="$1 vs $2" '
+    FNR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; file++; n[file] = 0; next }
+    { k = ++n[file]; t[file, k] = $col["time"]; v[file, k] = $col["probe_0_v_x"] }
+    function at(f, time,   k) {
+      for (k = 1; k < n[f] && t[f, k + 1] < time; k++);
+      if (k >= n[f]) return v[f, n[f]]
+      return v[f, k] + (v[f, k + 1] - v[f, k]) * (time - t[f, k]) / (t[f, k + 1] - t[f, k])
+    }
+    END {
+      m = 750; step = 8e-8; half = 12
+      for (i = 0; i <= m; i++) { a[i] = at(1, i * step); b[i] = at(2, i * step) }
+      for (i = 0; i <= m; i++) {
+        sa = sb = c = 0
+        for (j = i - half; j <= i + half; j++) if (j >= 0 && j <= m) { sa += a[j]; sb += b[j]; c++ }
+        part = (i * step < 33e-6) ? 1 : 2
+        d[part] += (a[i] - b[i]) ^ 2; r[part] += b[i] ^ 2
+        ds[part] += (sa / c - sb / c) ^ 2; rs[part] += (sb / c) ^ 2
+        if (i * step >= 42e-6) { ma += a[i]; mb += b[i]; mc++ }
+      }
+      printf "| %s | %.3f | %.3f | %.3f | %.3f | %.3f / %.3f |\n", name, sqrt(d[1] / r[1]),
+        sqrt(d[2] / r[2]), sqrt(ds[1] / rs[1]), sqrt(ds[2] / rs[2]), ma / mc, mb / mc }' \
+    "$(history "output-bar-impact-3d-$1")" "$(history "output-bar-impact-3d-$2")"
+}
+echo
+echo "| relative L2 at A | raw, t < 33 us | raw, t > 33 us | 2 us average, t < 33 us | 2 us average, t > 33 us | mean v_x at A, 42-60 us [m/s] |"
+echo "|---|---|---|---|---|---|"
+compare coupled fe
+if [ -f "$(history output-bar-impact-3d-fe-fine)" ]; then
+  compare fe-fine fe
+  compare coupled-fine fe-fine
+fi
+
 command -v gnuplot > /dev/null || { echo "gnuplot is missing (apt-get install gnuplot-nox): no figures" >&2; exit 0; }
 column() { head -1 "$1" | tr ',' '\n' | grep -nx "$2" | cut -d: -f1; }
 t=$(column "$reference" time); a=$(column "$reference" probe_0_v_x)
