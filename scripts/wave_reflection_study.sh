@@ -1,0 +1,74 @@
+#!/bin/bash
+# The reflection study of the overlap (doc/wave_study.md, "Reflection against wavelength"):
+# R(lambda / h) and T(lambda / h) of a wave packet sent from the pure PD zone into the
+# overlap (PeriArlequin::WaveReflection, build/periarlequin-wave-reflection), for FE/PD size
+# ratios, overlap widths, couplings and damping settings. Writes <work>/reflection.csv
+# (configuration, lambda / h, h / dx, overlap cells, R, T, time) and, with gnuplot (Debian
+# gnuplot-nox), <work>/reflection.png:
+#   scripts/wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
+# <groups>: defaults (weak coupling, defaults; ratios 4 and 8, overlaps 3 and 5 cells),
+# couplings (bad, strict, weak without damping; ratio 8, overlap 5), damping (C = 10, 30, 100).
+set -euo pipefail
+usage="usage: wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
+build=$(cd "${1:?$usage}" && pwd)
+work=${2:?$usage}
+ranks=${3:-1}
+groups=${4:-defaults couplings damping}
+mkdir -p "$work"
+cd "$work"
+wavelengths="1.5 2 2.5 3 4 6 9 12 18 24"
+
+# measure <configuration name> <ratio> <overlap cells> <coupling entries, ';'-separated>
+measure() {
+  local name=$1 ratio=$2 cells=$3 coupling=$4 wl
+  for wl in $wavelengths; do
+    cat > case.prm << EOF2
+subsection Wave reflection
+  set Size ratio    = $ratio
+  set Overlap cells = $cells
+  set Wavelength    = $wl
+  set Coupling      = $coupling
+end
+EOF2
+    echo -n "$name,"
+    mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin-wave-reflection" case.prm 2> /dev/null | tail -1
+  done
+}
+
+{
+  echo "configuration,wavelength_cells,size_ratio,overlap_cells,R,T,time"
+  for group in $groups; do
+    case $group in
+      defaults)
+        for ratio in 4 8; do
+          for cells in 3 5; do
+            measure "weak_r${ratio}_o${cells}" $ratio $cells "set Method = weak"
+          done
+        done ;;
+      couplings)
+        measure bad_r8_o5 8 5 "set Method = bad"
+        measure strict_r8_o5 8 5 "set Method = strict"
+        measure weak_undamped_r8_o5 8 5 "set Method = weak; set Fine-scale damping = false" ;;
+      damping)
+        for constant in 10 100; do
+          measure "weak_C${constant}_r8_o5" 8 5 "set Method = weak; set Damping constant = $constant"
+        done ;;
+      *) echo "unknown group $group" >&2; exit 1 ;;
+    esac
+  done
+} | tee reflection.csv
+
+command -v gnuplot > /dev/null || { echo "gnuplot is missing (apt-get install gnuplot-nox): no figure" >&2; exit 0; }
+{
+  echo "set datafile separator ','; set terminal pngcairo size 900,600 noenhanced"
+  echo "set output 'reflection.png'; set logscale xy; set xlabel 'wavelength / FE cell'; set ylabel 'reflected energy / incident energy'"
+  echo "set key outside right; set yrange [1e-5:1]"
+  echo -n "plot "
+  separator=""
+  for name in $(tail -n +2 reflection.csv | cut -d, -f1 | uniq); do
+    echo -n "$separator'< grep ^$name, reflection.csv' using 2:5 with linespoints title '$name'"
+    separator=", "
+  done
+  echo ", 0.01 with lines dt 2 lc rgb 'black' title '1 %', 0.05 with lines dt 3 lc rgb 'black' title '5 %'"
+} | gnuplot
+echo "wrote $work/reflection.csv and $work/reflection.png"
