@@ -58,6 +58,20 @@ EOF2
   done
 } | tee reflection.csv
 
+# The table of doc/wave_study.md: R and T in percent, a row per configuration.
+awk -F, 'NR > 1 && NF == 7 {
+    if (!($1 in seen)) { seen[$1] = 1; names[++n] = $1 }
+    if (!($2 in seen_wl)) { seen_wl[$2] = 1; wl[++m] = $2 }
+    cell[$1, $2] = sprintf("%.2g / %.2g", 100 * $5, 100 * $6) }
+  END {
+    printf "| R / T [%%] at lambda / h = |"; for (j = 1; j <= m; j++) printf " %s |", wl[j]; print ""
+    printf "|---|"; for (j = 1; j <= m; j++) printf "---|"; print ""
+    for (i = 1; i <= n; i++) {
+      printf "| %s |", names[i]
+      for (j = 1; j <= m; j++) printf " %s |", ((names[i], wl[j]) in cell) ? cell[names[i], wl[j]] : "-"
+      print ""
+    } }' reflection.csv
+
 command -v gnuplot > /dev/null || { echo "gnuplot is missing (apt-get install gnuplot-nox): no figure" >&2; exit 0; }
 {
   echo "set datafile separator ','; set terminal pngcairo size 900,600 noenhanced"
