@@ -7,20 +7,22 @@
 # gnuplot-nox), <work>/reflection.png:
 #   scripts/wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups>: defaults (weak coupling, defaults; ratios 4 and 8, overlaps 3 and 5 cells),
-# couplings (bad, strict, weak without damping; ratio 8, overlap 5), damping (C = 10, 30, 100).
+# from_fe (the packet coming from the FE side; ratios 4 and 8, overlap 5), couplings (bad,
+# strict, weak without damping; ratio 8, overlap 5), damping (C = 10 and 100; the default is
+# 30). About an hour on one core for all.
 set -euo pipefail
 usage="usage: wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-defaults couplings damping}
+groups=${4:-defaults from_fe couplings damping}
 mkdir -p "$work"
 cd "$work"
 wavelengths="1.5 2 2.5 3 4 6 9 12 18 24"
 
-# measure <configuration name> <ratio> <overlap cells> <coupling entries, ';'-separated>
+# measure <configuration name> <ratio> <overlap cells> <coupling entries, ';'-separated> [<side>]
 measure() {
-  local name=$1 ratio=$2 cells=$3 coupling=$4 wl
+  local name=$1 ratio=$2 cells=$3 coupling=$4 side=${5:-pd} wl
   for wl in $wavelengths; do
     cat > case.prm << EOF2
 subsection Wave reflection
@@ -28,6 +30,7 @@ subsection Wave reflection
   set Overlap cells = $cells
   set Wavelength    = $wl
   set Coupling      = $coupling
+  set Incident side = $side
 end
 EOF2
     echo -n "$name,"
@@ -44,6 +47,10 @@ EOF2
           for cells in 3 5; do
             measure "weak_r${ratio}_o${cells}" $ratio $cells "set Method = weak"
           done
+        done ;;
+      from_fe)
+        for ratio in 4 8; do
+          measure "from_fe_weak_r${ratio}_o5" $ratio 5 "set Method = weak" fe
         done ;;
       couplings)
         measure bad_r8_o5 8 5 "set Method = bad"

@@ -26,6 +26,11 @@ namespace PeriArlequin
    * R = that / the packet's initial energy. What got through: T = the FE zone's energy
    * at that time / the energy the reference has carried past the pure PD zone. Both are
    * energy ratios.
+   *
+   * From the FE side (Incident side = fe) the packet starts in the pure FE zone beyond the
+   * overlap, moving to -x; the reference is FE over the whole strip; R is twice the kinetic
+   * energy of the difference at the pure-FE nodes (matched by position, lumped masses), T
+   * the pure PD zone's energy over the packet's.
    */
   struct WaveReflection
   {
@@ -47,6 +52,8 @@ namespace PeriArlequin
     double horizon_factor = 3.015;
     /** Time step over the PD stable-step estimate 0.2 dx / c [-]. */
     double time_step_fraction = 1;
+    /** Whether the packet comes from the FE zone (else from the pure PD zone). */
+    bool from_fe = false;
     /** The "Coupling" subsection's entries other than the regions, as parameter text. */
     std::string coupling = "set Method = weak\n";
 
