@@ -17,6 +17,20 @@ namespace PeriArlequin
   {}
 
   template <int dim>
+  Tensor<1, dim>
+  Contact<dim>::total_force() const
+  {
+    return Utilities::MPI::sum(local_force, communicator);
+  }
+
+  template <int dim>
+  unsigned int
+  Contact<dim>::n_touching_nodes() const
+  {
+    return Utilities::MPI::sum(local_touching, communicator);
+  }
+
+  template <int dim>
   void
   RigidWallContact<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -141,7 +155,7 @@ namespace PeriArlequin
   void
   RigidWallContact<dim>::initialize(const FEZone<dim> &zone)
   {
-    communicator = zone.get_dof_handler().get_communicator();
+    this->communicator = zone.get_dof_handler().get_communicator();
     check_linear_elements(zone, "rigid wall");
     const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
     nodes.clear();
@@ -156,7 +170,7 @@ namespace PeriArlequin
           nodes.push_back(node);
         }
 
-    AssertThrow(Utilities::MPI::sum(nodes.size(), communicator) > 0,
+    AssertThrow(Utilities::MPI::sum(nodes.size(), this->communicator) > 0,
                 ExcMessage("Invalid input: 'Contact/rigid wall/Boundary ids' selects no FE "
                            "boundary node; allowed: ids of boundaries that carry FE cells."));
 
@@ -176,7 +190,7 @@ namespace PeriArlequin
             worst = x;
           }
       }
-    const auto least = Utilities::MPI::min_max_avg(gap, communicator).min;
+    const auto least = Utilities::MPI::min_max_avg(gap, this->communicator).min;
     if (least < -1e-12 * std::max(std::abs(wall_point * normal), 1e-3))
       {
         std::ostringstream where;
@@ -198,8 +212,8 @@ namespace PeriArlequin
                                  typename Contact<dim>::VectorType       &a,
                                  typename Contact<dim>::VectorType       &applied_force)
   {
-    local_force    = Tensor<1, dim>();
-    local_touching = 0;
+    this->local_force    = Tensor<1, dim>();
+    this->local_touching = 0;
     for (const auto &node : nodes)
       {
         double gap = (node.position - wall_point) * normal;
@@ -211,30 +225,16 @@ namespace PeriArlequin
           }
         if (gap >= 0)
           continue;
-        ++local_touching;
+        ++this->local_touching;
         const double push = -gap / (dt * dt);
         for (unsigned int d = 0; d < dim; ++d)
           {
             const unsigned int i = node.dofs[d];
             a.local_element(i) += push * normal[d];
             applied_force.local_element(i) += mass.local_element(i) * push * normal[d];
-            local_force[d] += mass.local_element(i) * push * normal[d];
+            this->local_force[d] += mass.local_element(i) * push * normal[d];
           }
       }
-  }
-
-  template <int dim>
-  Tensor<1, dim>
-  RigidWallContact<dim>::total_force() const
-  {
-    return Utilities::MPI::sum(local_force, communicator);
-  }
-
-  template <int dim>
-  unsigned int
-  RigidWallContact<dim>::n_touching_nodes() const
-  {
-    return Utilities::MPI::sum(local_touching, communicator);
   }
 
   template <int dim>
@@ -358,7 +358,7 @@ namespace PeriArlequin
   void
   ElasticTargetContact<dim>::initialize(const FEZone<dim> &zone)
   {
-    communicator = zone.get_dof_handler().get_communicator();
+    this->communicator = zone.get_dof_handler().get_communicator();
     check_linear_elements(zone, "elastic target");
     const IndexSet    &owned     = zone.get_dof_handler().locally_owned_dofs();
     const unsigned int n_face_vertices = GeometryInfo<dim>::vertices_per_face;
@@ -394,8 +394,8 @@ namespace PeriArlequin
               for (unsigned int d = 0; d < dim; ++d)
                 faces.push_back(outward[d]);
             }
-    const auto all_striker = Utilities::MPI::all_gather(communicator, mine);
-    const auto all_faces   = Utilities::MPI::all_gather(communicator, faces);
+    const auto all_striker = Utilities::MPI::all_gather(this->communicator, mine);
+    const auto all_faces   = Utilities::MPI::all_gather(this->communicator, faces);
 
     // The striker vertices, then the target's vertices, as one sorted list of nodes.
     const unsigned int vertex_width = 2 * dim, face_width = n_face_vertices * vertex_width + dim;
@@ -520,7 +520,7 @@ namespace PeriArlequin
             local[d] = owned.index_within_set(nodes[k].dofs[d]);
           owned_dofs.push_back(local);
         }
-    nodes_of_rank = Utilities::MPI::all_gather(communicator, owned_nodes);
+    nodes_of_rank = Utilities::MPI::all_gather(this->communicator, owned_nodes);
     striker_owned_here.assign(nodes.size(), false);
     for (const unsigned int k : owned_nodes)
       striker_owned_here[k] = striker.count(nodes[k].dofs[0]) > 0;
@@ -573,7 +573,7 @@ namespace PeriArlequin
             mine.push_back(vector->local_element(local[d]));
         mine.push_back(mass.local_element(local[0]));
       }
-    const auto all = Utilities::MPI::all_gather(communicator, mine);
+    const auto all = Utilities::MPI::all_gather(this->communicator, mine);
     state.assign(nodes.size() * width, 0.);
     for (unsigned int rank = 0; rank < all.size(); ++rank)
       for (unsigned int k = 0; k < nodes_of_rank[rank].size(); ++k)
@@ -633,13 +633,13 @@ namespace PeriArlequin
           break;
       }
 
-    local_force    = Tensor<1, dim>();
-    local_touching = 0;
+    this->local_force    = Tensor<1, dim>();
+    this->local_touching = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       if (lambda[p] > 0 && striker_owned_here[pairs[p].striker])
         {
-          local_force += lambda[p] * pairs[p].normal;
-          ++local_touching;
+          this->local_force += lambda[p] * pairs[p].normal;
+          ++this->local_touching;
         }
     for (unsigned int k = 0; k < owned_nodes.size(); ++k)
       {
@@ -651,20 +651,6 @@ namespace PeriArlequin
             applied_force.local_element(i) += mass.local_element(i) * change[d] / (dt * dt);
           }
       }
-  }
-
-  template <int dim>
-  Tensor<1, dim>
-  ElasticTargetContact<dim>::total_force() const
-  {
-    return Utilities::MPI::sum(local_force, communicator);
-  }
-
-  template <int dim>
-  unsigned int
-  ElasticTargetContact<dim>::n_touching_nodes() const
-  {
-    return Utilities::MPI::sum(local_touching, communicator);
   }
 
   template class Contact<2>;

@@ -63,14 +63,25 @@ namespace PeriArlequin
 
     /**
      * The total contact force on the body at the last enforce() [N], summed over ranks
-     * (collective: call it on every rank; the time loop itself needs no sum).
+     * (collective: call it on every rank; the time loop itself needs no sum). By default the
+     * sum of local_force.
      */
     virtual Tensor<1, dim>
-    total_force() const = 0;
+    total_force() const;
 
-    /** The number of nodes in contact at the last enforce(), summed over ranks (collective). */
+    /**
+     * The number of nodes in contact at the last enforce(), summed over ranks (collective).
+     * By default the sum of local_touching.
+     */
     virtual unsigned int
-    n_touching_nodes() const = 0;
+    n_touching_nodes() const;
+
+  protected:
+    /** The FE zone's communicator, set by initialize(). */
+    MPI_Comm       communicator = MPI_COMM_SELF;
+    /** This rank's share of the contact force and of the touching nodes at the last enforce(). */
+    Tensor<1, dim> local_force;
+    unsigned int   local_touching = 0;
   };
 
   /** The registry of contact models. */
@@ -128,11 +139,6 @@ namespace PeriArlequin
             const typename Contact<dim>::VectorType &velocity,
             typename Contact<dim>::VectorType       &acceleration,
             typename Contact<dim>::VectorType       &applied_force) override;
-    Tensor<1, dim>
-    total_force() const override;
-    unsigned int
-    n_touching_nodes() const override;
-
   private:
     /** A boundary node that may touch: its DoFs (owned, local indices) and position. */
     struct Node
@@ -146,10 +152,6 @@ namespace PeriArlequin
     Tensor<1, dim>          normal;
     std::set<unsigned int>  boundary_ids;
     std::vector<Node>       nodes;
-    MPI_Comm                communicator;
-    /** This rank's contact force and touching nodes at the last enforce(). */
-    Tensor<1, dim>          local_force;
-    unsigned int            local_touching = 0;
   };
 
   /**
@@ -189,11 +191,6 @@ namespace PeriArlequin
             const typename Contact<dim>::VectorType &velocity,
             typename Contact<dim>::VectorType       &acceleration,
             typename Contact<dim>::VectorType       &applied_force) override;
-    Tensor<1, dim>
-    total_force() const override;
-    unsigned int
-    n_touching_nodes() const override;
-
   private:
     /** A striker vertex and the target face it projects onto. */
     struct Pair
@@ -216,7 +213,6 @@ namespace PeriArlequin
                  std::vector<double>                     &state) const;
 
     std::set<unsigned int>   striker_ids, target_ids;
-    MPI_Comm                 communicator;
     /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
     std::vector<BoundaryVertex<dim>> nodes;
     std::vector<Pair>                pairs;
@@ -229,8 +225,6 @@ namespace PeriArlequin
     std::vector<bool> striker_owned_here;
     /** The smallest target face diameter [m]: the scale of the gap tolerances. */
     double            face_size = 0;
-    Tensor<1, dim>    local_force;
-    unsigned int      local_touching = 0;
   };
 } // namespace PeriArlequin
 
