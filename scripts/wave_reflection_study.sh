@@ -9,7 +9,8 @@
 # <groups>: defaults (weak coupling, defaults; ratios 4 and 8, overlaps 3 and 5 cells),
 # from_fe (the packet coming from the FE side; ratios 4 and 8, overlap 5), couplings (bad,
 # strict, weak without damping; ratio 8, overlap 5), damping (C = 10 and 100; the default is
-# 30). About an hour on one core for all.
+# 30). About an hour on one core for all. <groups> = table: only the table and the figure of
+# an existing <work>/reflection.csv (e.g. the concatenation of runs made in parallel).
 set -euo pipefail
 usage="usage: wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
@@ -38,7 +39,7 @@ EOF2
   done
 }
 
-{
+[ "$groups" = table ] || {
   echo "configuration,wavelength_cells,size_ratio,overlap_cells,R,T,time"
   for group in $groups; do
     case $group in
@@ -69,7 +70,7 @@ EOF2
 awk -F, 'NR > 1 && NF == 7 {
     if (!($1 in seen)) { seen[$1] = 1; names[++n] = $1 }
     if (!($2 in seen_wl)) { seen_wl[$2] = 1; wl[++m] = $2 }
-    cell[$1, $2] = sprintf("%.2g / %.2g", 100 * $5, 100 * $6) }
+    cell[$1, $2] = sprintf("%.2g / %.3g", 100 * $5, 100 * $6) }
   END {
     printf "| R / T [%%] at lambda / h = |"; for (j = 1; j <= m; j++) printf " %s |", wl[j]; print ""
     printf "|---|"; for (j = 1; j <= m; j++) printf "---|"; print ""
@@ -83,7 +84,7 @@ command -v gnuplot > /dev/null || { echo "gnuplot is missing (apt-get install gn
 {
   echo "set datafile separator ','; set terminal pngcairo size 900,600 noenhanced"
   echo "set output 'reflection.png'; set logscale xy; set xlabel 'wavelength / FE cell'; set ylabel 'reflected energy / incident energy'"
-  echo "set key outside right; set yrange [1e-5:1]"
+  echo "set key outside right; set xrange [1:30]; set yrange [1e-5:1]"
   echo -n "plot "
   separator=""
   for name in $(tail -n +2 reflection.csv | cut -d, -f1 | uniq); do
