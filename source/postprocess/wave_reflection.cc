@@ -54,11 +54,13 @@ namespace PeriArlequin
     for (const auto &entry : Utilities::split_string_list(prm.get("Coupling"), ';'))
       coupling += entry + "\n";
     prm.leave_subsection();
-    if (!(size_ratio + 0.5 >= horizon_factor + 0.5))
+    if (size_ratio < horizon_factor + 0.5)
       throw_invalid_parameter("Wave reflection/Size ratio",
                               std::to_string(size_ratio),
-                              "at least the horizon factor + 1/2, so that one FE cell holds a "
-                              "particle's bonds (the ghost layer)");
+                              "at least the horizon factor + 1/2 (" +
+                                std::to_string(horizon_factor + 0.5) +
+                                "), so that one FE cell holds a particle's bonds (the ghost "
+                                "layer)");
   }
 
   namespace
