@@ -3,6 +3,7 @@
 // (scripts/wave_reflection_study.sh). Reads the subsection "Wave reflection" of a parameter
 // file and prints one CSV row: wavelength / h, h / dx, overlap cells, R, T, time [s].
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
 #include <periarlequin/postprocess/wave_reflection.h>
@@ -32,9 +33,16 @@ main(int argc, char **argv)
                   << study.overlap_cells << "," << result.reflected << "," << result.transmitted
                   << "," << result.time << std::endl;
     }
+  catch (const dealii::ExceptionBase &error)
+    {
+      // The message alone: input errors are for users, not a stack trace.
+      std::cerr << "\nError:\n";
+      error.print_info(std::cerr);
+      return 1;
+    }
   catch (const std::exception &error)
     {
-      std::cerr << "\nError:\n    " << error.what() << std::endl;
+      std::cerr << "\nError: " << error.what() << std::endl;
       return 1;
     }
   return 0;
