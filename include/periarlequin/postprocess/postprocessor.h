@@ -126,7 +126,7 @@ namespace PeriArlequin
    * Velocity histories at points (Postprocess/probes/Points) [m/s], per component: where an
    * FE cell holds the point (the FE zone and the overlaps), the FE field there; elsewhere
    * (the pure PD zone) the nearest PD particle, the lowest in (z, y, x) among equally near
-   * ones, so that the choice does not depend on the partition. Columns probe_<k>_v_<axis>,
+   * ones, so that the choice does not depend on the partition. Columns `probe_<k>_v_<axis>`,
    * k from 0 in the order given. Where each point lies is found once and again only after
    * the zones change (a repartition, cells converted to PD).
    */
