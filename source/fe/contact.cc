@@ -529,19 +529,10 @@ namespace PeriArlequin
     std::vector<double> state;
     const auto         &s = zone.get_state();
     gather_state(zone.lumped_mass(), s.displacement, s.velocity, s.acceleration, state);
-    const unsigned int width = 3 * dim + 1;
+    const std::vector<Point<dim>> x = positions(state, 0.);
     for (const auto &pair : pairs)
       {
-        Tensor<1, dim> gap_vector = nodes[pair.striker].position - Point<dim>();
-        for (unsigned int d = 0; d < dim; ++d)
-          gap_vector[d] += state[pair.striker * width + d];
-        for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
-          {
-            const unsigned int n = pair.face_nodes[j];
-            for (unsigned int d = 0; d < dim; ++d)
-              gap_vector[d] -= pair.weights[j] * (nodes[n].position[d] + state[n * width + d]);
-          }
-        const double gap = gap_vector * pair.normal;
+        const double gap = pair_gap(pair, x);
         if (gap < -1e-9 * face_size)
           {
             std::ostringstream where;
@@ -583,6 +574,29 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::vector<Point<dim>>
+  ElasticTargetContact<dim>::positions(const std::vector<double> &state, const double dt) const
+  {
+    const unsigned int      width = 3 * dim + 1;
+    std::vector<Point<dim>> x(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        x[k][d] = nodes[k].position[d] + state[k * width + d] + dt * state[k * width + dim + d] +
+                  dt * dt * state[k * width + 2 * dim + d];
+    return x;
+  }
+
+  template <int dim>
+  double
+  ElasticTargetContact<dim>::pair_gap(const Pair &pair, const std::vector<Point<dim>> &x) const
+  {
+    Tensor<1, dim> gap = x[pair.striker] - Point<dim>();
+    for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
+      gap -= pair.weights[j] * (x[pair.face_nodes[j]] - Point<dim>());
+    return gap * pair.normal;
+  }
+
+  template <int dim>
   void
   ElasticTargetContact<dim>::enforce(const double                             dt,
                                      const typename Contact<dim>::VectorType &mass,
@@ -593,15 +607,18 @@ namespace PeriArlequin
   {
     std::vector<double> state;
     gather_state(mass, u, v, a, state);
-    const unsigned int width = 3 * dim + 1;
-    // The next positions x = X + u + dt v + dt^2 a, and the contact's change of them.
-    std::vector<Point<dim>>     next(nodes.size());
+    const auto mass_of = [&](const unsigned int k) { return state[k * (3 * dim + 1) + 3 * dim]; };
+    // The next positions, moved by the contact forces as the sweeps find them, and the moves
+    // themselves (kept apart: their difference of positions would lose digits).
+    std::vector<Point<dim>>     x = positions(state, dt);
     std::vector<Tensor<1, dim>> shift(nodes.size());
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        next[k][d] = nodes[k].position[d] + state[k * width + d] +
-                     dt * state[k * width + dim + d] + dt * dt * state[k * width + 2 * dim + d];
-    const auto mass_of = [&](const unsigned int k) { return state[k * width + 3 * dim]; };
+    std::vector<double>           compliance(pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        compliance[p] = 1. / mass_of(pairs[p].striker);
+        for (unsigned int j = 0; j < pairs[p].face_nodes.size(); ++j)
+          compliance[p] += pairs[p].weights[j] * pairs[p].weights[j] / mass_of(pairs[p].face_nodes[j]);
+      }
 
     std::vector<double> lambda(pairs.size(), 0.);
     for (unsigned int sweep = 0; sweep < 100; ++sweep)
@@ -609,25 +626,20 @@ namespace PeriArlequin
         double largest = 0;
         for (unsigned int p = 0; p < pairs.size(); ++p)
           {
-            const Pair    &pair = pairs[p];
-            Tensor<1, dim> gap_vector = next[pair.striker] + shift[pair.striker] - Point<dim>();
-            double         compliance = 1. / mass_of(pair.striker);
-            for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
-              {
-                const unsigned int n = pair.face_nodes[j];
-                gap_vector -= pair.weights[j] * (next[n] + shift[n] - Point<dim>());
-                compliance += pair.weights[j] * pair.weights[j] / mass_of(n);
-              }
-            const double gap    = gap_vector * pair.normal;
-            const double change = std::max(-lambda[p], -gap / (dt * dt * compliance));
+            const Pair  &pair   = pairs[p];
+            const double change = std::max(-lambda[p], -pair_gap(pair, x) / (dt * dt * compliance[p]));
             if (change == 0)
               continue;
             lambda[p] += change;
             const Tensor<1, dim> impulse = dt * dt * change * pair.normal;
-            shift[pair.striker] += impulse / mass_of(pair.striker);
+            const auto move = [&](const unsigned int k, const Tensor<1, dim> &by) {
+              x[k] += by;
+              shift[k] += by;
+            };
+            move(pair.striker, impulse / mass_of(pair.striker));
             for (unsigned int j = 0; j < pair.face_nodes.size(); ++j)
-              shift[pair.face_nodes[j]] -= pair.weights[j] * impulse / mass_of(pair.face_nodes[j]);
-            largest = std::max(largest, std::abs(change) * dt * dt * compliance);
+              move(pair.face_nodes[j], -pair.weights[j] * impulse / mass_of(pair.face_nodes[j]));
+            largest = std::max(largest, std::abs(change) * dt * dt * compliance[p]);
           }
         if (largest <= 1e-12 * face_size)
           break;

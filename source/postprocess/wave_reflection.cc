@@ -4,6 +4,7 @@
 #include <periarlequin/postprocess/wave_reflection.h>
 #include <periarlequin/simulator.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>

@@ -212,6 +212,17 @@ namespace PeriArlequin
                  const typename Contact<dim>::VectorType &acceleration,
                  std::vector<double>                     &state) const;
 
+    /**
+     * The nodes' positions X + u + dt v + dt^2 a from the gathered @p state (dt = 0: the
+     * current ones).
+     */
+    std::vector<Point<dim>>
+    positions(const std::vector<double> &state, const double dt) const;
+
+    /** The gap n . (x_s - sum_j N_j x_j) of @p pair at the node positions @p x [m]. */
+    double
+    pair_gap(const Pair &pair, const std::vector<Point<dim>> &x) const;
+
     std::set<unsigned int>   striker_ids, target_ids;
     /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
     std::vector<BoundaryVertex<dim>> nodes;
