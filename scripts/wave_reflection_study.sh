@@ -6,17 +6,19 @@
 # (configuration, lambda / h, h / dx, overlap cells, R, T, time) and, with gnuplot (Debian
 # gnuplot-nox), <work>/reflection.png:
 #   scripts/wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
-# <groups>: defaults (weak coupling, defaults; ratios 4 and 8, overlaps 3 and 5 cells),
-# from_fe (the packet coming from the FE side; ratios 4 and 8, overlap 5), couplings (bad,
-# strict, weak without damping; ratio 8, overlap 5), damping (C = 10 and 100; the default is
-# 30). About an hour on one core for all. <groups> = table: only the table and the figure of
+# <groups>: defaults (weak coupling, defaults: lambda-mesh of 2 FE cells, C = 10; ratios 4
+# and 8, overlaps 3 and 5 cells), from_fe (the packet coming from the FE side; ratios 4 and
+# 8, overlap 5), fe_nodes (the paper's lambda-mesh, the FE nodes, and C = 30; ratios 4 and 8,
+# overlap 5), couplings (bad, strict, weak without damping; ratio 8, overlap 5), damping
+# (C = 5 and 30 on the default lambda-mesh; spacing 1.5 and 3 cells; ratio 8, overlap 5).
+# About 40 minutes on one core for all. <groups> = table: only the table and the figure of
 # an existing <work>/reflection.csv (e.g. the concatenation of runs made in parallel).
 set -euo pipefail
 usage="usage: wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-defaults from_fe couplings damping}
+groups=${4:-defaults from_fe fe_nodes couplings damping}
 mkdir -p "$work"
 cd "$work"
 wavelengths="1.5 2 2.5 3 4 6 9 12 18 24"
@@ -53,13 +55,22 @@ EOF2
         for ratio in 4 8; do
           measure "from_fe_weak_r${ratio}_o5" $ratio 5 "set Method = weak" fe
         done ;;
+      fe_nodes)
+        for ratio in 4 8; do
+          measure "fe_nodes_C30_r${ratio}_o5" $ratio 5 \
+            "set Method = weak; set Damping constant = 30; subsection weak; set Multiplier spacing = 1; end"
+        done ;;
       couplings)
         measure bad_r8_o5 8 5 "set Method = bad"
         measure strict_r8_o5 8 5 "set Method = strict"
         measure weak_undamped_r8_o5 8 5 "set Method = weak; set Fine-scale damping = false" ;;
       damping)
-        for constant in 10 100; do
+        for constant in 5 30; do
           measure "weak_C${constant}_r8_o5" 8 5 "set Method = weak; set Damping constant = $constant"
+        done
+        for spacing in 1.5 3; do
+          measure "weak_k${spacing}_r8_o5" 8 5 \
+            "set Method = weak; subsection weak; set Multiplier spacing = $spacing; end"
         done ;;
       *) echo "unknown group $group" >&2; exit 1 ;;
     esac

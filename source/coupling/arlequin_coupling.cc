@@ -12,6 +12,30 @@ namespace PeriArlequin
   {}
 
   template <int dim>
+  void
+  ArlequinCoupling<dim>::declare_weak_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Multiplier spacing",
+                      "2",
+                      Patterns::Double(1),
+                      "The lambda-mesh, in FE cells h (the largest cell extent around the "
+                      "overlap): 1 puts a multiplier on every FE node of the overlap (H = N); "
+                      "k > 1 on every node of a Cartesian grid of Q1 hats of spacing k h laid "
+                      "from the lower corner of the overlap. At k = 2 the constraint leaves the "
+                      "waves of 2 to 4 FE cells, which the FE mesh cannot propagate, to the "
+                      "fine-scale damping instead of reflecting them (doc/wave_study.md) "
+                      "[FE cells].");
+  }
+
+  template <int dim>
+  void
+  ArlequinCoupling<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    if (mesh == MultiplierMesh::weak)
+      multiplier_spacing = prm.get_double("Multiplier spacing");
+  }
+
+  template <int dim>
   BlendingProfile
   ArlequinCoupling<dim>::blending_profile() const
   {
@@ -65,8 +89,16 @@ namespace PeriArlequin
 
     if (mesh == MultiplierMesh::strict)
       space = std::make_unique<StrictMultiplierSpace<dim>>(overlap, communicator);
-    else
+    else if (multiplier_spacing == 1)
       space = std::make_unique<WeakMultiplierSpace<dim>>(overlap, fe);
+    else
+      {
+        std::vector<Point<dim>> positions;
+        for (const unsigned int i : overlap_particles)
+          positions.push_back(pd.reference_positions()[i]);
+        space =
+          std::make_unique<GridMultiplierSpace<dim>>(overlap, fe, positions, multiplier_spacing);
+      }
     space->initialize_vector(lambda);
     space->initialize_vector(rhs);
     if (lambda.size() == 0)
@@ -214,8 +246,10 @@ namespace PeriArlequin
                creator(Mesh::strict)) &&
              CouplingRegistry<dim>::register_plugin(
                "weak",
-               "Arlequin, a multiplier on every FE node of the overlap (H = N).",
-               creator(Mesh::weak));
+               "Arlequin, a multiplier on every FE node of the overlap (H = N) or on the "
+               "nodes of a coarser grid (Coupling/weak/Multiplier mesh spacing).",
+               creator(Mesh::weak),
+               &ArlequinCoupling<dim>::declare_weak_parameters);
     }
 
     const bool arlequin_couplings_registered =

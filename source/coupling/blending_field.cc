@@ -59,7 +59,9 @@ namespace PeriArlequin
       entries.add("Damping constant",
                   damping_constant,
                   Patterns::Double(0),
-                  "C of eq. 78 [-] (the paper's value is 30).");
+                  "C of eq. 78 [-]. The paper's value is 30; 10 with the default lambda-mesh "
+                  "(Coupling/weak/Multiplier spacing = 2) keeps the reflection of the whole band "
+                  "below 4 % and costs resolved waves less (doc/wave_study.md).");
       entries.add("Damping wave speed",
                   damping_wave_speed,
                   Patterns::Double(0),

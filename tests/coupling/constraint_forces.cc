@@ -11,9 +11,10 @@
 //    dt |lambda|_inf / m_PD, must exceed 1e-6 v_max (round-off, as in rigid motion, is 1e-15);
 //  - the total energy (damping off) must stay within 0.5 % of the initial energy (its O(dt)
 //    drift from a velocity-level constraint is 0.26 % at this step, see wave_transmission).
-// Strict and weak coupling. The CG solve is preconditioned by the diagonal of A (Jacobi),
-// assembled in closed form (strict: sum_J N_IJ^2 / m_J + 1 / m_I; weak: through
-// B = N^T N); each entry must equal e_m . A e_m with A applied as the operator chain
+// Strict and weak coupling, and weak on a lambda-mesh of 2 FE cells (a grid of its own).
+// The CG solve is preconditioned by the diagonal of A (Jacobi), assembled in closed form
+// (strict: sum_J N_IJ^2 / m_J + 1 / m_I; weak: through B = N^T N) or probed colour by colour
+// (the grid); each entry must equal e_m . A e_m with A applied as the operator chain
 // dt H^T (N M_c^-1 N^T + M_p^-1) H, to 1e-12 (round-off of sums of positive terms).
 
 #include <periarlequin/coupling/arlequin_coupling.h>
@@ -46,11 +47,17 @@ namespace
   }
 
   void
-  check_constraint_forces(const std::string &method)
+  check_constraint_forces(const std::string &method, const double multiplier_spacing = 1)
   {
-    const std::string name = method + " coupling";
-    auto              simulator = make_simulator<2>(
-      strip_case(method, "energy", "cg", false, false, smooth_pulse, "0; 0", time_step, end_time, 1));
+    std::ostringstream text, title;
+    title << method << " coupling";
+    if (multiplier_spacing > 1)
+      title << " on a grid of " << multiplier_spacing << " FE cells";
+    const std::string name = title.str();
+    text << strip_case(method, "energy", "cg", false, false, smooth_pulse, "0; 0", time_step, end_time, 1)
+         << "subsection Coupling\n  subsection weak\n    set Multiplier spacing = "
+         << multiplier_spacing << "\n  end\nend\n";
+    auto simulator = make_simulator<2>(text.str());
     simulator->setup();
     auto &coupling =
       dynamic_cast<PeriArlequin::ArlequinCoupling<2> &>(*simulator->get_coupling());
@@ -97,5 +104,6 @@ main(int argc, char **argv)
   return run_test(argc, argv, [] {
     check_constraint_forces("strict");
     check_constraint_forces("weak");
+    check_constraint_forces("weak", 2);
   });
 }

@@ -1,5 +1,6 @@
 // MPI: 2 ranks reproduce 1 rank for the weak coupling with the paper's diagonal multipliers
-// and fine-scale damping, for the strict coupling under the paper's blending and for the bad
+// and fine-scale damping (on the default lambda-mesh of 2 FE cells, whose grid nodes are
+// owned in ranges unrelated to the FE partition, and on the FE nodes), for the strict coupling under the paper's blending and for the bad
 // coupling of fig. 8 (its FE slaves interpolate the PD lattice across the partition): the
 // strip case with the smooth pulse crossing the overlaps (300 steps); and in 3D, the weak
 // coupling with damping on the bar case, a pulse from the PD middle into both overlaps (100
@@ -25,6 +26,15 @@ main(int argc, char **argv)
                   strip_case(
                     "weak", "energy", "diagonal", true, false, smooth_pulse, "0; 0", 2e-7, 6e-5, 1),
                   "weak"),
+                1e-10);
+    check_below("weak on the FE nodes, diagonal, damping: 2 ranks vs 1 rank, max relative "
+                "difference",
+                parallel_vs_serial_history_difference<2>(
+                  strip_case(
+                    "weak", "energy", "diagonal", true, false, smooth_pulse, "0; 0", 2e-7, 6e-5, 1) +
+                    "subsection Coupling\n  subsection weak\n    set Multiplier spacing = 1\n"
+                    "  end\nend\n",
+                  "weak FE nodes"),
                 1e-10);
     check_below("strict, diagonal, paper blending: 2 ranks vs 1 rank, max relative difference",
                 parallel_vs_serial_history_difference<2>(

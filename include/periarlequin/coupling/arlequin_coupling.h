@@ -18,7 +18,7 @@ namespace PeriArlequin
   /**
    * The Arlequin coupling with Lagrange multipliers (DESIGN.md section 2), registered as
    * "strict" (a multiplier per PD node of the overlap, H = I) and "weak" (a multiplier per FE
-   * node of the overlap, H = N). Made of named operators: N at the overlap's PD nodes
+   * node of the overlap, H = N, or per node of a coarser Cartesian grid). Made of named operators: N at the overlap's PD nodes
    * (InterpolationOperator), the lambda-mesh H (MultiplierSpace), the multiplier system
    * (MultiplierSolver), the fine-scale damping (FineScaleDamping) and the slaves that complete
    * the families past the overlap (SlaveLayer).
@@ -44,6 +44,12 @@ namespace PeriArlequin
     };
 
     ArlequinCoupling(const Parameters::Coupling &parameters, const MultiplierMesh mesh);
+
+    /** The weak coupling's own entries (subsection Coupling/weak). */
+    static void
+    declare_weak_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
     BlendingProfile
     blending_profile() const override;
@@ -84,6 +90,8 @@ namespace PeriArlequin
 
     const Parameters::Coupling parameters;
     const MultiplierMesh       mesh;
+    /** Spacing of the weak coupling's lambda-mesh in FE cells; 1: the FE nodes [-]. */
+    double                     multiplier_spacing = 2;
     FEZone<dim>               *fe_zone = nullptr;
     PDZone<dim>               *pd_zone = nullptr;
     double                     time_step = 0;

@@ -63,7 +63,7 @@ namespace PeriArlequin
       Blending         blending = Blending::energy;
       MultiplierSolver multiplier_solver     = MultiplierSolver::diagonal;
       bool             damping               = true;
-      double           damping_constant      = 30.;
+      double           damping_constant      = 10.;
       double           damping_wave_speed    = 0.;
       double           damping_overlap_width = 0.;
       double           minimum_pd_weight     = 0.1;

@@ -3,6 +3,8 @@
 
 #include <periarlequin/coupling/interpolation_operator.h>
 
+#include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -109,6 +111,68 @@ namespace PeriArlequin
     /** Owned FE DoFs (local index) carrying a multiplier, in multiplier order. */
     std::vector<unsigned int>         multiplier_dofs;
     VectorType                        fe_scratch;
+  };
+
+  /**
+   * Weak coupling on a lambda-mesh of its own: the Q1 hat functions of a Cartesian grid of
+   * spacing H = k h_FE (k >= 1, h_FE the largest FE cell extent around the overlap) laid from
+   * the lower corner of the overlap's PD nodes, a multiplier per grid node whose hat reaches one of them. With H = 2 h_FE the
+   * constraint is blind to the waves of 2 to 4 FE cells that the FE mesh carries but cannot
+   * propagate: in the overlap they are fine scale, left to the damping, instead of being
+   * tied to an FE field that sends them back (doc/wave_study.md).
+   */
+  template <int dim>
+  class GridMultiplierSpace : public MultiplierSpace<dim>
+  {
+  public:
+    using typename MultiplierSpace<dim>::VectorType;
+    using typename MultiplierSpace<dim>::Values;
+
+    /**
+     * The grid of spacing @p spacing_in_cells (k >= 1) FE cells over the overlap nodes
+     * @p positions (the rows of @p overlap).
+     */
+    GridMultiplierSpace(const InterpolationOperator<dim> &overlap,
+                        const FEZone<dim>                &fe_zone,
+                        const std::vector<Point<dim>>    &positions,
+                        const double                      spacing_in_cells);
+
+    void
+    apply_h(const VectorType &lambda, Values &p) override;
+    void
+    apply_transpose_h(const Values &s, VectorType &y) override;
+    /**
+     * Probed: A restricted to the multipliers of one colour (grid nodes whose indices agree
+     * modulo a stride that keeps their reach apart) is diagonal, so applying the weighted
+     * operator to the colour's indicator returns their diagonal entries.
+     */
+    void
+    diagonal_of_projection(const VectorType          &fe_weights,
+                           const std::vector<double> &pd_weights,
+                           VectorType                &diagonal) const override;
+
+  private:
+    /** Hat weight of a grid node at an overlap node (local index of its first component). */
+    struct Entry
+    {
+      unsigned int node;
+      double       value;
+    };
+
+    void
+    evaluate(const VectorType &lambda, Values &p) const;
+    void
+    evaluate_transpose(const Values &s, VectorType &y) const;
+
+    const InterpolationOperator<dim> &overlap;
+    const FEZone<dim>                &fe_zone;
+    std::vector<unsigned int>         row_begin = {0};
+    std::vector<Entry>                entries;
+    /** Colour of each owned grid node (0 to stride^dim - 1). */
+    std::vector<unsigned int>         colours;
+    unsigned int                      n_colours = 1;
+    /** Multipliers with the ghost entries that the owned overlap nodes reach. */
+    mutable VectorType                ghosted;
   };
 } // namespace PeriArlequin
 
