@@ -4,7 +4,7 @@
 # of its left side to the centre, loaded by the crack-tip field of eq. 82 on its four sides
 # with K_eff = Kdot t at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
 # Pure PD, coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
-# beyond, weak coupling, force blending, damping constant 10: the default 30 over-damps the
+# beyond, weak coupling, force blending, damping constant 10: the paper's 30 over-damps the
 # narrow overlaps at this time step) and adaptive (PD on the crack only, growing with it,
 # doc/adaptive_zone.md). Prints the table of doc/mixed_mode.md and draws each
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):

@@ -10,30 +10,34 @@
 # and 8, overlaps 3 and 5 cells), from_fe (the packet coming from the FE side; ratios 4 and
 # 8, overlap 5), fe_nodes (the paper's lambda-mesh, the FE nodes, and C = 30; ratios 4 and 8,
 # overlap 5), couplings (bad, strict, weak without damping; ratio 8, overlap 5), damping
-# (C = 5 and 30 on the default lambda-mesh; spacing 1.5 and 3 cells; ratio 8, overlap 5).
-# About 40 minutes on one core for all. <groups> = table: only the table and the figure of
+# (C = 5 and 30 on the default lambda-mesh; spacing 1.5 and 3 cells; ratio 8, overlap 5),
+# robustness (the default lambda-mesh moved by 1/4, 1/2, 3/4 of its spacing; overlap 4 cells;
+# half and a quarter of the time step; exact (CG) multipliers; ratio 8). About 70 minutes on
+# one core for all. <groups> = table: only the table and the figure of
 # an existing <work>/reflection.csv (e.g. the concatenation of runs made in parallel).
 set -euo pipefail
 usage="usage: wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-groups=${4:-defaults from_fe fe_nodes couplings damping}
+groups=${4:-defaults from_fe fe_nodes couplings damping robustness}
 mkdir -p "$work"
 cd "$work"
 wavelengths="1.5 2 2.5 3 4 6 9 12 18 24"
 
-# measure <configuration name> <ratio> <overlap cells> <coupling entries, ';'-separated> [<side>]
+# measure <configuration name> <ratio> <overlap cells> <coupling entries, ';'-separated> [<side>
+#         [<time step fraction>]]
 measure() {
-  local name=$1 ratio=$2 cells=$3 coupling=$4 side=${5:-pd} wl
+  local name=$1 ratio=$2 cells=$3 coupling=$4 side=${5:-pd} fraction=${6:-1} wl
   for wl in $wavelengths; do
     cat > case.prm << EOF2
 subsection Wave reflection
-  set Size ratio    = $ratio
-  set Overlap cells = $cells
-  set Wavelength    = $wl
-  set Coupling      = $coupling
-  set Incident side = $side
+  set Size ratio         = $ratio
+  set Overlap cells      = $cells
+  set Wavelength         = $wl
+  set Coupling           = $coupling
+  set Incident side      = $side
+  set Time step fraction = $fraction
 end
 EOF2
     echo -n "$name,"
@@ -72,6 +76,16 @@ EOF2
           measure "weak_k${spacing}_r8_o5" 8 5 \
             "set Method = weak; subsection weak; set Multiplier spacing = $spacing; end"
         done ;;
+      robustness)
+        for offset in 0.25 0.5 0.75; do
+          measure "weak_offset${offset}_r8_o5" 8 5 \
+            "set Method = weak; subsection weak; set Multiplier grid offset = $offset; end"
+        done
+        measure weak_r8_o4 8 4 "set Method = weak"
+        for fraction in 0.5 0.25; do
+          measure "weak_dt${fraction}_r8_o5" 8 5 "set Method = weak" pd $fraction
+        done
+        measure weak_cg_r8_o5 8 5 "set Method = weak; set Multiplier solver = cg" ;;
       *) echo "unknown group $group" >&2; exit 1 ;;
     esac
   done

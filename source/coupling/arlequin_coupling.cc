@@ -25,6 +25,12 @@ namespace PeriArlequin
                       "waves of 2 to 4 FE cells, which the FE mesh cannot propagate, to the "
                       "fine-scale damping instead of reflecting them (doc/wave_study.md) "
                       "[FE cells].");
+    prm.declare_entry("Multiplier grid offset",
+                      "0",
+                      Patterns::Double(0, 0.999),
+                      "With a spacing k > 1: the grid's nodes start this fraction of the spacing "
+                      "before the lower corner of the overlap's PD nodes. The reflection near "
+                      "the cut-off of the lambda-mesh depends on it (doc/wave_study.md) [-].");
   }
 
   template <int dim>
@@ -32,7 +38,10 @@ namespace PeriArlequin
   ArlequinCoupling<dim>::parse_parameters(ParameterHandler &prm)
   {
     if (mesh == MultiplierMesh::weak)
-      multiplier_spacing = prm.get_double("Multiplier spacing");
+      {
+        multiplier_spacing     = prm.get_double("Multiplier spacing");
+        multiplier_grid_offset = prm.get_double("Multiplier grid offset");
+      }
   }
 
   template <int dim>
@@ -97,7 +106,8 @@ namespace PeriArlequin
         for (const unsigned int i : overlap_particles)
           positions.push_back(pd.reference_positions()[i]);
         space =
-          std::make_unique<GridMultiplierSpace<dim>>(overlap, fe, positions, multiplier_spacing);
+          std::make_unique<GridMultiplierSpace<dim>>(
+            overlap, fe, positions, multiplier_spacing, multiplier_grid_offset);
       }
     space->initialize_vector(lambda);
     space->initialize_vector(rhs);

@@ -148,7 +148,8 @@ namespace PeriArlequin
   GridMultiplierSpace<dim>::GridMultiplierSpace(const InterpolationOperator<dim> &overlap,
                                                 const FEZone<dim>                &fe_zone,
                                                 const std::vector<Point<dim>>    &positions,
-                                                const double spacing_in_cells)
+                                                const double spacing_in_cells,
+                                                const double offset)
     : overlap(overlap)
     , fe_zone(fe_zone)
   {
@@ -185,6 +186,8 @@ namespace PeriArlequin
         }
     cell_extent           = Utilities::MPI::max(cell_extent, communicator);
     const double spacing = spacing_in_cells * cell_extent;
+    for (unsigned int d = 0; d < dim; ++d)
+      lower[d] -= offset * spacing;
 
     std::array<types::global_dof_index, dim> n_cells, n_nodes;
     for (unsigned int d = 0; d < dim; ++d)

@@ -325,7 +325,7 @@ namespace PeriArlequinTests
    * run to @p end_time; the time step is 1e-7 s x 128 / n. A lattice of @p n sites per side, horizon factor @p m, @p cells FE
    * cells per side; coupled: PD for x <= A c, |y| <= H c (c the cell size, H c >= 7 delta,
    * A c >= 6 delta), overlaps of 2 cells, FE beyond, weak coupling, force blending, damping constant 10 (the
-   * default 30 over-damps these narrow overlaps at this time step). The
+   * paper's 30 over-damps these narrow overlaps at this time step). The
    * crack diagnostics follow the tip at the centre; bonds break as the fracture criterion
    * @p criterion says.
    */

@@ -92,6 +92,8 @@ namespace PeriArlequin
     const MultiplierMesh       mesh;
     /** Spacing of the weak coupling's lambda-mesh in FE cells; 1: the FE nodes [-]. */
     double                     multiplier_spacing = 2;
+    /** Where that grid starts, a fraction of its spacing before the overlap's corner [-]. */
+    double                     multiplier_grid_offset = 0;
     FEZone<dim>               *fe_zone = nullptr;
     PDZone<dim>               *pd_zone = nullptr;
     double                     time_step = 0;

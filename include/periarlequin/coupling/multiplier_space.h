@@ -116,7 +116,7 @@ namespace PeriArlequin
   /**
    * Weak coupling on a lambda-mesh of its own: the Q1 hat functions of a Cartesian grid of
    * spacing H = k h_FE (k >= 1, h_FE the largest FE cell extent around the overlap) laid from
-   * the lower corner of the overlap's PD nodes, a multiplier per grid node whose hat reaches one of them. With H = 2 h_FE the
+   * the lower corner of the overlap's PD nodes (or a fraction of H before it), a multiplier per grid node whose hat reaches one of them. With H = 2 h_FE the
    * constraint is blind to the waves of 2 to 4 FE cells that the FE mesh carries but cannot
    * propagate: in the overlap they are fine scale, left to the damping, instead of being
    * tied to an FE field that sends them back (doc/wave_study.md).
@@ -130,12 +130,14 @@ namespace PeriArlequin
 
     /**
      * The grid of spacing @p spacing_in_cells (k >= 1) FE cells over the overlap nodes
-     * @p positions (the rows of @p overlap).
+     * @p positions (the rows of @p overlap), its nodes moved back by @p offset (in [0, 1))
+     * of the spacing from their lower corner.
      */
     GridMultiplierSpace(const InterpolationOperator<dim> &overlap,
                         const FEZone<dim>                &fe_zone,
                         const std::vector<Point<dim>>    &positions,
-                        const double                      spacing_in_cells);
+                        const double                      spacing_in_cells,
+                        const double                      offset);
 
     void
     apply_h(const VectorType &lambda, Values &p) override;
