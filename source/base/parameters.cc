@@ -255,6 +255,12 @@ namespace PeriArlequin
                   Patterns::Double(0),
                   "Print a progress line at most every this many wall-clock seconds (0: "
                   "never) [s].");
+      entries.add("Compression",
+                  compression,
+                  output_compression_names,
+                  "zlib level of the .vtu data: fast (zlib's fastest), small (its smallest, "
+                  "deal.II's default: files about 20 % smaller, several times slower to "
+                  "write) or none.");
       entries.add("Print timing summary",
                   print_timing,
                   Patterns::Bool(),

@@ -111,6 +111,7 @@ namespace PeriArlequin
                              vector_field);
     data_out.add_data_vector(displacement, stress);
     data_out.build_patches();
+    data_out.set_flags(vtk_flags(parameters, time, step));
 
     const MPI_Comm    communicator = fe_zone.get_dof_handler().get_communicator();
     const std::string name         = data_out.write_vtu_with_pvtu_record(

@@ -24,6 +24,7 @@ namespace PeriArlequin
 
     Particles::DataOut<dim> data_out;
     data_out.build_patches(pd_zone.get_particle_handler(), names, interpretation);
+    data_out.set_flags(vtk_flags(parameters, time, step));
     series.add(time,
                data_out.write_vtu_with_pvtu_record(parameters.directory + "/",
                                                    parameters.base_name + "_pd",

@@ -6,6 +6,25 @@
 
 namespace PeriArlequin
 {
+  DataOutBase::VtkFlags
+  vtk_flags(const Parameters::Output &parameters, const double time, const unsigned int step)
+  {
+    DataOutBase::VtkFlags flags(time, step);
+    switch (parameters.compression)
+      {
+        case Parameters::OutputCompression::fast:
+          flags.compression_level = DataOutBase::VtkFlags::best_speed;
+          break;
+        case Parameters::OutputCompression::small:
+          flags.compression_level = DataOutBase::VtkFlags::best_compression;
+          break;
+        case Parameters::OutputCompression::none:
+          flags.compression_level = DataOutBase::VtkFlags::no_compression;
+          break;
+      }
+    return flags;
+  }
+
   PVDSeries::PVDSeries(const std::string &pvd_file_name, const MPI_Comm communicator)
     : file_name(pvd_file_name)
     , writer(Utilities::MPI::this_mpi_process(communicator) == 0)

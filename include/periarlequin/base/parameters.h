@@ -274,6 +274,22 @@ namespace PeriArlequin
     };
 
     /** What is written, where, and how often. */
+    /** The zlib level of the field files' data. */
+    enum class OutputCompression
+    {
+      /** zlib's fastest level. */
+      fast,
+      /** zlib's smallest (deal.II's default). */
+      small,
+      /** No compression. */
+      none
+    };
+
+    inline const SelectionNames<OutputCompression> output_compression_names = {
+      {"fast", OutputCompression::fast},
+      {"small", OutputCompression::small},
+      {"none", OutputCompression::none}};
+
     struct Output
     {
       std::string  directory         = "output";
@@ -282,6 +298,7 @@ namespace PeriArlequin
       unsigned int energy_interval   = 1;
       double       progress_interval = 5;
       bool         print_timing      = true;
+      OutputCompression compression  = OutputCompression::fast;
       /**
        * Segment "x0, y0 : x1, y1" along which displacements are sampled ("" for none), and
        * boxes whose PD energies are recorded as the pure PD zone's ("": the PD region). Kept

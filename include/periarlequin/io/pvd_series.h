@@ -1,7 +1,10 @@
 #ifndef periarlequin_io_pvd_series_h
 #define periarlequin_io_pvd_series_h
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
+
+#include <periarlequin/base/parameters.h>
 
 #include <string>
 #include <utility>
@@ -10,6 +13,13 @@
 namespace PeriArlequin
 {
   using namespace dealii;
+
+  /**
+   * The VTU flags of a field file of step @p step at time @p time: the time and step stored
+   * in the file, the zlib level of Output/Compression.
+   */
+  DataOutBase::VtkFlags
+  vtk_flags(const Parameters::Output &parameters, const double time, const unsigned int step);
 
   /** A .pvd record of a series of .pvtu files, rewritten on rank 0 after each addition. */
   class PVDSeries
