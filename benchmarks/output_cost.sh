@@ -67,7 +67,7 @@ for case in arlequin_wave_2d_coarse arlequin_wave_2d_weak_dt1e-7; do
       size=$(cat "$work/$case.$level"/*_"$last".* | wc -c)
     fi
     awk -v l="$level" -v t="$t" -v o="$o" -v w="${writes:-0}" -v b="$size" 'BEGIN {
-      printf "  %-6s %10.3f %10.3f %6.1f%% %9.1f ms %9.0f kB\n", l, t, o, 100 * o / t, w > 0 ? 1000 * o / w : 0, b / 1024 }'
+      printf "  %-6s %10.3f %10.3f %6.1f%% %9.1f ms %9.0f kB\n", l, t, o, 100 * o / t, (w > 0 ? 1000 * o / w : 0), b / 1024 }'
   done
   if [ "$case" = arlequin_wave_2d_coarse ]; then
     t=$(median < "$work/$case.fast.total")
