@@ -7,11 +7,12 @@
 // blending, diagonal multiplier solve, lambda-mesh of 2 FE cells, fine-scale damping C = 10).
 // The issue's targets: R <= 1 % for lambda >= 6 h, R <= 5 % across the band.
 //  - The measurement closes the balance where nothing is meant to be absorbed: lambda = 12 h
-//    (resolved by the mesh), damping off, R + T within 0.015 of 1 (measured 0.991; 0.994
+//    (resolved by the mesh), damping off, R + T within 0.01 of 1 (measured 0.991; 0.994
 //    with the FE-node lambda-mesh), and what is missing is the velocity projection's loss,
 //    first order in dt (doc/wave_study.md): at half the step it is at most 0.6 of that at the
-//    step (first order: 0.5; measured 0.53). R and T come from different runs and zones, so this checks both, and energy
-//    blending without damping conserves energy as dt -> 0 (issue item 5).
+//    step (first order: 0.5; measured 0.53). R and T come from different runs and zones, so
+//    this checks both, and energy blending without damping conserves energy as dt -> 0 (issue
+//    item 5).
 //  - Resolved by the FE mesh, lambda = 6 h: R <= 1 % (measured 0.047 %) and T >= 0.9
 //    (measured 0.924; the damping takes some of a resolved wave too, as the constraint on the
 //    coarser lambda-mesh holds the PD motion to the FE field only in the mean over a hat).
@@ -74,7 +75,7 @@ main(int argc, char **argv)
     const auto        balance  = measure(12, undamped, MPI_COMM_WORLD);
     const auto        half_dt  = measure(12, undamped, MPI_COMM_WORLD, false, 0.5);
     report("lambda = 12 h, damping off: R", balance.reflected);
-    check("lambda = 12 h, damping off: R + T", balance.reflected + balance.transmitted, 1., 0.015);
+    check("lambda = 12 h, damping off: R + T", balance.reflected + balance.transmitted, 1., 0.01);
     check_below("lambda = 12 h, damping off: (1 - R - T) at dt / 2 over (1 - R - T) at dt",
                 (1 - half_dt.reflected - half_dt.transmitted) /
                   (1 - balance.reflected - balance.transmitted),
