@@ -138,7 +138,8 @@ namespace PeriArlequin
                            GhostExchange<dim>                           &ghosts,
                            const std::function<bool(const Point<dim> &)> &extent,
                            const std::vector<PreCrack<dim>>             &pre_cracks,
-                           const std::function<bool(const Point<dim> &)> &no_fail)
+                           const std::function<bool(const Point<dim> &)> &no_fail,
+                           const Kernel                                  kernel)
   {
     const unsigned int owned = ghosts.n_owned();
     const auto         x       = ghosts.reference_positions();
@@ -193,6 +194,25 @@ namespace PeriArlequin
       }
     end_families(owned, ghosts.n_total());
     ghosts.update_ghosts(make_array_view(weighted_volume), 1);
+
+    layout         = StencilLayout<dim>();
+    stencil_active = false;
+    if (kernel != Kernel::bond_list)
+      {
+        layout.build(lattice, ids, *this);
+        stencil_active =
+          kernel == Kernel::stencil || layout.fill_ratio() <= max_stencil_fill_ratio;
+        if (!stencil_active)
+          layout = StencilLayout<dim>();
+      }
+  }
+
+  template <int dim>
+  void
+  BondFamilies<dim>::states_changed()
+  {
+    if (stencil_active)
+      layout.update_mask(*this);
   }
 
   template <int dim>
@@ -229,6 +249,7 @@ namespace PeriArlequin
             if (ids[neighbor[n]] == other)
               state[n] = broken;
         }
+    states_changed();
   }
 
   template class BondFamilies<2>;

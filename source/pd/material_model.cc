@@ -42,6 +42,20 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  bool
+  PDMaterialModel<dim>::supports_stencil() const
+  {
+    return false;
+  }
+
+  template <int dim>
+  bool
+  LinearPeridynamicSolid<dim>::supports_stencil() const
+  {
+    return true;
+  }
+
+  template <int dim>
   unsigned int
   LinearPeridynamicSolid<dim>::n_particle_scalars() const
   {
@@ -62,6 +76,8 @@ namespace PeriArlequin
     ArrayView<const Tensor<1, dim>>  u,
     std::vector<double>               &scalars) const
   {
+    if (bonds.uses_stencil())
+      return compute_particle_scalars_on_stencil(bonds, u, scalars);
     // Per owned particle: the extension moment sum x e V v and the intact weighted volume
     // sum x^2 V v, gathered bond by bond into both owned ends.
     moments.assign(2 * bonds.n_owned, 0.);
@@ -159,6 +175,8 @@ namespace PeriArlequin
                                               std::vector<Tensor<1, dim>>       &force_density,
                                               std::vector<double> &energy_density) const
   {
+    if (bonds.uses_stencil())
+      return compute_forces_on_stencil(bonds, u, scalars, state_weight, force_density, energy_density);
     // The state weights scale each particle's force state, as they scale its energy.
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     std::fill(force_density.begin(), force_density.begin() + bonds.n_owned, Tensor<1, dim>());

@@ -58,6 +58,14 @@ namespace PeriArlequin
                   "The PD material model, by its registered name:" +
                     PDMaterialRegistry<dim>::documentation() +
                     "\nA model's own parameters are in the subsection of its name.");
+      entries.add("Force kernel",
+                  force_kernel,
+                  Patterns::Selection("automatic|stencil|bond list"),
+                  "How the material model visits the bonds: 'stencil' loops over lattice "
+                  "offsets and contiguous runs of particles (no neighbour lists; vectorised; "
+                  "the LPS model), 'bond list' over per-particle neighbour lists (any model), "
+                  "'automatic' takes the stencil unless a rank's box of lattice sites holds more "
+                  "than 4 sites per particle it holds. The results agree to round-off.");
       entries.add("Fracture",
                   fracture,
                   Patterns::Bool(),

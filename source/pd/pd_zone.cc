@@ -406,6 +406,25 @@ namespace PeriArlequin
     vertex_to_cells.clear();
   }
 
+  namespace
+  {
+    /** The kernel that Peridynamics/Force kernel asks for, and that @p model offers. */
+    template <int dim>
+    typename BondFamilies<dim>::Kernel
+    force_kernel(const std::string &choice, const PDMaterialModel<dim> &model)
+    {
+      using Kernel = typename BondFamilies<dim>::Kernel;
+      if (choice == "bond list" || (choice == "automatic" && !model.supports_stencil()))
+        return Kernel::bond_list;
+      if (!model.supports_stencil())
+        throw_invalid_parameter("Peridynamics/Force kernel",
+                                choice,
+                                "'bond list' or 'automatic' with this material model (it has "
+                                "no stencil kernel)");
+      return choice == "stencil" ? Kernel::stencil : Kernel::automatic;
+    }
+  } // namespace
+
   template <int dim>
   void
   PDZone<dim>::build_particle_structures()
@@ -425,7 +444,7 @@ namespace PeriArlequin
     };
     bonds.build(lattice, ghosts, extent_in_mesh, parameters.pre_cracks, [this](const Point<dim> &x) {
       return parameters.no_fail_region.contains(x) || blending_weight(x) > 0;
-    });
+    }, force_kernel(parameters.force_kernel, *model));
     find_bonds_near_overlap();
     model->initialize(material, bonds);
 

@@ -104,6 +104,8 @@ namespace PeriArlequin
           update_model_scalars();
         const bool broke =
           fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
+        if (broke)
+          bonds.states_changed();
         scalars_current = fracture->needs_particle_scalars() &&
                           !Utilities::MPI::logical_or(broke, communicator);
       }

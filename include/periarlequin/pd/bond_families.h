@@ -6,6 +6,7 @@
 #include <periarlequin/base/regions.h>
 #include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
+#include <periarlequin/pd/stencil_layout.h>
 
 #include <array>
 #include <cstdint>
@@ -47,6 +48,18 @@ namespace PeriArlequin
       double volume;
     };
 
+    /** How the material models loop over the bonds (Peridynamics/Force kernel). */
+    enum class Kernel
+    {
+      /** The stencil unless the padded box holds more than max_stencil_fill_ratio slots a particle. */
+      automatic,
+      stencil,
+      /** The CSR arrays. */
+      bond_list
+    };
+    /** Above this many box slots per held particle, automatic takes the CSR arrays. */
+    static constexpr double max_stencil_fill_ratio = 4;
+
     enum BondState : std::uint8_t
     {
       broken      = 0,
@@ -75,7 +88,24 @@ namespace PeriArlequin
           GhostExchange<dim>                           &ghosts,
           const std::function<bool(const Point<dim> &)> &extent,
           const std::vector<PreCrack<dim>>             &pre_cracks,
-          const std::function<bool(const Point<dim> &)> &no_fail);
+          const std::function<bool(const Point<dim> &)> &no_fail,
+          const Kernel                                  kernel = Kernel::automatic);
+
+    /** Whether the models loop over the stencil layout (else over the CSR arrays). */
+    bool
+    uses_stencil() const
+    {
+      return stencil_active;
+    }
+    /** The stencil view of the bonds (only if uses_stencil()). */
+    const StencilLayout<dim> &
+    stencil_layout() const
+    {
+      return layout;
+    }
+    /** Call after changing entries of state (a fracture criterion did): refreshes the stencil view. */
+    void
+    states_changed();
 
     using IdPair = std::pair<types::particle_index, types::particle_index>;
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
@@ -129,6 +159,9 @@ namespace PeriArlequin
     damage() const;
 
   private:
+    StencilLayout<dim> layout;
+    bool               stencil_active = false;
+
     /** Start a family for the next owned particle (call in order of local index). */
     void
     begin_family();

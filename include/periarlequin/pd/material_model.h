@@ -43,6 +43,13 @@ namespace PeriArlequin
     virtual void
     initialize(const Parameters::Material &material, const BondFamilies<dim> &bonds) = 0;
 
+    /**
+     * Whether the model has kernels for the stencil layout of the bonds (then it must use
+     * them when BondFamilies::uses_stencil()); the default loops over the CSR arrays only.
+     */
+    virtual bool
+    supports_stencil() const;
+
     /** How many scalars per particle compute_forces() needs on ghost particles too. */
     virtual unsigned int
     n_particle_scalars() const = 0;
@@ -122,6 +129,9 @@ namespace PeriArlequin
   public:
     void
     initialize(const Parameters::Material &material, const BondFamilies<dim> &bonds) override;
+    /** Vectorised dilatation and force passes on the stencil layout (lps_stencil_kernel.cc). */
+    bool
+    supports_stencil() const override;
     unsigned int
     n_particle_scalars() const override;
     std::vector<std::string>
@@ -160,11 +170,38 @@ namespace PeriArlequin
                          ArrayView<const double>     scalars,
                          const std::vector<double>  &state_weight) const;
 
+    /** compute_particle_scalars() on the stencil layout of @p bonds. */
+    void
+    compute_particle_scalars_on_stencil(const BondFamilies<dim>         &bonds,
+                                        ArrayView<const Tensor<1, dim>> displacement,
+                                        std::vector<double>             &scalars) const;
+    /** compute_forces() on the stencil layout of @p bonds. */
+    void
+    compute_forces_on_stencil(const BondFamilies<dim>         &bonds,
+                              ArrayView<const Tensor<1, dim>> displacement,
+                              const std::vector<double>       &scalars,
+                              const std::vector<double>       &state_weight,
+                              std::vector<Tensor<1, dim>>     &force_density,
+                              std::vector<double>             &energy_density) const;
+    /** The displacements of the held particles in the box slots, one array per component. */
+    void
+    gather_displacements(const StencilLayout<dim>       &layout,
+                         ArrayView<const Tensor<1, dim>> displacement) const;
+
     double                      c = 0, k = 0, b = 0;
     double                      youngs_modulus = 0, bulk_modulus = 0;
     bool                        plane_strain   = false;
     mutable std::vector<double> coefficients;
     mutable std::vector<double> moments;
+
+    /**
+     * Scratch of the stencil kernels, per box slot: displacement components, the three
+     * force-state coefficients, extension moment, intact weighted volume (for the layout's
+     * mask version box_volume_version), force components, deviatoric sum; and per run chunk.
+     */
+    mutable std::vector<double> box_displacement, box_coefficients, box_moment, box_volume,
+      box_force, box_deviatoric, chunk;
+    mutable unsigned int box_volume_version = 0;
   };
 } // namespace PeriArlequin
 

@@ -47,6 +47,8 @@ namespace PeriArlequin
       double                      lattice_spacing = 0.0025;
       double                      horizon_factor  = 3.015;
       std::string                 material_model  = "LPS";
+      /** How the model loops over the bonds: automatic, stencil or bond list. */
+      std::string                 force_kernel    = "automatic";
       bool                        fracture        = false;
       /** The registered fracture criterion used when fracture is on. */
       std::string                 fracture_criterion  = "critical stretch";

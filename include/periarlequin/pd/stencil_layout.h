@@ -1,0 +1,115 @@
+#ifndef periarlequin_pd_stencil_layout_h
+#define periarlequin_pd_stencil_layout_h
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/types.h>
+
+#include <periarlequin/pd/lattice.h>
+
+#include <cstddef>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  template <int dim>
+  class BondFamilies;
+
+  /**
+   * The bonds of one rank as a lattice stencil: the particles it holds (owned and ghosts)
+   * placed in a box of lattice sites (x fastest, padded by the stencil's reach on every side),
+   * so that the neighbour at stencil offset o of the site in slot s is in slot s + delta(o)
+   * for every site. A force pass then loops over half of the offsets (delta > 0, each bond
+   * once) and, for each, over a contiguous run of slots, with no neighbour indices: it
+   * streams contiguous arrays and vectorises.
+   *
+   * A run is the held slots of one lattice line (from its first to its last held site); the
+   * bond state is one byte per (slot of a run, half offset), 1 for a bond that is intact (or
+   * unbreakable) with at least one owned end, 0 otherwise: broken, pre-cut, to a site not held
+   * (outside the PD zone, a hole), or between two ghosts. The BondFamilies' CSR arrays stay
+   * the description of the bonds; this is a view of them, refreshed by update_mask() after
+   * their states change.
+   *
+   * Every rank visits the runs in the order of their global lattice line and the offsets in
+   * the stencil's order, and a particle gets the contribution of each bond in that order, so
+   * a particle's sums do not depend on the partition (bonds without an owned end add zero).
+   */
+  template <int dim>
+  class StencilLayout
+  {
+  public:
+    /** One lattice line's held slots. */
+    struct Run
+    {
+      /** First slot. */
+      std::size_t begin;
+      unsigned int length;
+      /** Its bond states: mask[mask_begin + h length + (s - begin)] for half offset h. */
+      std::size_t mask_begin;
+    };
+
+    /** One of the half of the stencil offsets whose slot shift is positive. */
+    struct HalfOffset
+    {
+      std::size_t  delta;
+      unsigned int stencil_index;
+    };
+
+    /**
+     * Place the held particles, ids @p ids in local order, of @p lattice in the box and fill
+     * the bond states from @p bonds (whose stencil and CSR arrays are built).
+     */
+    void
+    build(const Lattice<dim>                     &lattice,
+          ArrayView<const types::particle_index> ids,
+          const BondFamilies<dim>                &bonds);
+
+    /** The bond states again, from the CSR states of @p bonds (after bonds broke). */
+    void
+    update_mask(const BondFamilies<dim> &bonds);
+
+    /** Slots in the padded box. */
+    std::size_t
+    n_slots() const
+    {
+      return n_box_slots;
+    }
+
+    /** Slots of the box per held particle (1 for a full box; the cost of the layout). */
+    double
+    fill_ratio() const;
+
+    /** Changes whenever the bond states change (unique over all layouts): for caches of what derives from them. */
+    unsigned int
+    mask_version() const
+    {
+      return version;
+    }
+
+    /** The slot of every held particle, by local index. */
+    std::vector<std::size_t> slot;
+    std::vector<Run>         runs;
+    std::vector<HalfOffset>  half_offsets;
+    std::vector<std::uint8_t> mask;
+    /** The longest run. */
+    unsigned int max_run_length = 0;
+
+  private:
+    std::array<std::size_t, dim> stride;
+    std::array<int, dim>         lower;
+    /** Per stencil entry: the half offset of the bond, seen from the end with the lower slot. */
+    std::vector<unsigned int> half_of_entry;
+    /** Per stencil entry: whether its own slot shift is positive (its owner is that end). */
+    std::vector<bool> entry_is_half;
+    std::size_t                  n_box_slots = 0;
+    /** The run of each lattice line of the box (by slot / stride[1]), or -1. */
+    std::vector<int> run_of_line;
+    unsigned int     n_held  = 0;
+    unsigned int     version = 0;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,381 @@
+// The LPS dilatation and force passes on the stencil layout of the bonds (see StencilLayout):
+// for each run of slots and each half offset, a loop over contiguous slots that the
+// compiler vectorises (#pragma omp simd, this file is compiled with -fopenmp-simd). Debian's
+// deal.II is built for generic x86-64, so the passes are compiled twice, for AVX2 and for
+// the baseline, and the loader picks one (target_clones); neither uses FMA contraction, so
+// both give the same bits.
+#include <periarlequin/pd/material_model.h>
+
+#include <algorithm>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#  define PERIARLEQUIN_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#  define PERIARLEQUIN_KERNEL_CLONES
+#endif
+
+namespace PeriArlequin
+{
+  namespace
+  {
+    /** Slots per chunk of a run: the chunk's bond values stay in the L1 cache. */
+    constexpr unsigned int chunk_length = 256;
+
+    /** What a pass over one (run, half offset) block reads: the bond and the two ends. */
+    template <int dim>
+    struct Block
+    {
+      double        xi[dim];
+      double        length, volume;
+      std::size_t   first, delta;
+      unsigned int  n;
+      const std::uint8_t *mask;
+    };
+
+    /**
+     * Visit the blocks of @p layout chunk by chunk: @p visit(block) for each run, half offset
+     * and chunk of the run, in the order that makes the sums independent of the partition.
+     */
+    template <int dim, typename Visitor>
+    inline __attribute__((always_inline)) void
+    for_each_block(const StencilLayout<dim>                               &layout,
+                   const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
+                   const Visitor                                          &visit)
+    {
+      Block<dim> block;
+      for (const auto &run : layout.runs)
+        for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
+          {
+            const auto &half = layout.half_offsets[h];
+            const auto &bond = stencil[half.stencil_index];
+            for (unsigned int d = 0; d < dim; ++d)
+              block.xi[d] = bond.xi[d];
+            block.length = bond.length;
+            block.volume = bond.volume;
+            block.delta  = half.delta;
+            const std::uint8_t *mask =
+              layout.mask.data() + run.mask_begin + h * std::size_t(run.length);
+            for (unsigned int first = 0; first < run.length; first += chunk_length)
+              {
+                block.first = run.begin + first;
+                block.n     = std::min(chunk_length, run.length - first);
+                block.mask  = mask + first;
+                visit(block);
+              }
+          }
+    }
+
+    /**
+     * Extension e and deformed length of the bond q of a block, from the displacement
+     * components @p ui at its lower ends and @p uj at its upper ends: the formula of
+     * BondFamilies::extension() term by term, so both layouts give the same bits.
+     */
+    template <int dim>
+    inline __attribute__((always_inline)) double
+    bond_extension(const double *xi,
+                   const double  length,
+                   const double *const *ui,
+                   const double *const *uj,
+                   const int     q,
+                   double       &deformed_length)
+    {
+      // Component by component, without a loop: a loop here keeps the compiler from
+      // vectorising over q.
+      double     xi_eta = 0, eta_eta = 0, length_squared = 0;
+      const auto add    = [&](const unsigned int d) __attribute__((always_inline)) {
+        const double eta = uj[d][q] - ui[d][q];
+        xi_eta += xi[d] * eta;
+        eta_eta += eta * eta;
+        const double y = xi[d] + eta;
+        length_squared += y * y;
+      };
+      add(0);
+      add(1);
+      if constexpr (dim == 3)
+        add(2);
+      deformed_length = std::sqrt(length_squared);
+      return (2. * xi_eta + eta_eta) / (deformed_length + length);
+    }
+
+    /** The pointers to the @p dim components of @p values (n_slots each) at slot @p first. */
+    template <int dim>
+    inline __attribute__((always_inline)) void
+    component_pointers(const double *values, const std::size_t n_slots, const std::size_t first,
+                       const double **pointers)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        pointers[d] = values + d * n_slots + first;
+    }
+
+    /** The bond states of a block as doubles (1 or 0): all lanes of the passes are doubles. */
+    inline __attribute__((always_inline)) void
+    unpack_mask(const std::uint8_t *mask, const int n, double *__restrict intact)
+    {
+#pragma omp simd
+      for (int q = 0; q < n; ++q)
+        intact[q] = mask[q];
+    }
+
+    /** Add the chunk's values to the lower ends (sign +1) and to the upper ends. */
+    inline __attribute__((always_inline)) void
+    add_to_ends(double *lower_end, double *upper_end, const double *values,
+                const double upper_sign, const unsigned int n)
+    {
+#pragma omp simd
+      for (unsigned int q = 0; q < n; ++q)
+        lower_end[q] += values[q];
+#pragma omp simd
+      for (unsigned int q = 0; q < n; ++q)
+        upper_end[q] += upper_sign * values[q];
+    }
+
+    /** Sum of x^2 V v over the intact bonds of every slot. */
+    template <int dim>
+    inline __attribute__((always_inline)) void
+    intact_volume_pass_impl(const StencilLayout<dim>                                    &layout,
+                            const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
+                            double *volume,
+                            double *chunk)
+    {
+      for_each_block(layout, stencil, [&](const Block<dim> &block) __attribute__((always_inline)) {
+        const double weighted = block.length * block.length * block.volume;
+#pragma omp simd
+        for (unsigned int q = 0; q < block.n; ++q)
+          chunk[q] = block.mask[q] ? weighted : 0.;
+        add_to_ends(volume + block.first, volume + block.first + block.delta, chunk, 1., block.n);
+      });
+    }
+
+    /** Sum of x e V v over the intact bonds of every slot. */
+    template <int dim>
+    inline __attribute__((always_inline)) void
+    moment_pass_impl(const StencilLayout<dim>                                    &layout,
+                     const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
+                     const double *u,
+                     double       *moment,
+                     double       *chunk)
+    {
+      const std::size_t n_slots = layout.n_slots();
+      for_each_block(layout, stencil, [=](const Block<dim> &block) __attribute__((always_inline)) {
+        const Block<dim>    b    = block;
+        const std::uint8_t *mask = b.mask;
+        const double       *ui[dim], *uj[dim];
+        component_pointers<dim>(u, n_slots, b.first, ui);
+        component_pointers<dim>(u, n_slots, b.first + b.delta, uj);
+        const int n = b.n;
+        double *__restrict values = chunk, *__restrict intact = chunk + chunk_length;
+        unpack_mask(mask, n, intact);
+#pragma omp simd
+        for (int q = 0; q < n; ++q)
+          {
+            double       deformed_length;
+            const double e = bond_extension<dim>(b.xi, b.length, ui, uj, q, deformed_length);
+            values[q]      = intact[q] != 0. ? b.length * e * b.volume : 0.;
+          }
+        add_to_ends(moment + block.first, moment + block.first + block.delta, chunk, 1., block.n);
+      });
+    }
+
+    /**
+     * Pair forces (t_ij + t_ji) V v (xi + eta) / |xi + eta| and deviatoric sums
+     * omega e_d^2 V v of both ends, from the coefficients beta, a, theta / 3 of every slot
+     * (LinearPeridynamicSolid::compute_coefficients()).
+     */
+    template <int dim>
+    inline __attribute__((always_inline)) void
+    force_pass_impl(const StencilLayout<dim>                                    &layout,
+                    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
+                    const double *u,
+                    const double *coefficients,
+                    double       *force,
+                    double       *deviatoric,
+                    double       *chunk)
+    {
+      const std::size_t n_slots = layout.n_slots();
+      const double     *beta = coefficients, *a = coefficients + n_slots,
+                   *theta_3 = coefficients + 2 * n_slots;
+      for_each_block(layout, stencil, [=](const Block<dim> &block) __attribute__((always_inline)) {
+        const Block<dim>    b    = block;
+        const std::size_t   j    = b.delta;
+        const std::uint8_t *mask = b.mask;
+        const double       *ui[dim], *uj[dim];
+        component_pointers<dim>(u, n_slots, b.first, ui);
+        component_pointers<dim>(u, n_slots, b.first + j, uj);
+        const double *beta_i = beta + b.first, *beta_j = beta_i + j, *a_i = a + b.first,
+                     *a_j = a_i + j, *theta_3_i = theta_3 + b.first, *theta_3_j = theta_3_i + j;
+        const int n = b.n;
+        double *__restrict values = chunk, *__restrict intact = chunk + (dim + 2) * chunk_length;
+        unpack_mask(mask, n, intact);
+#pragma omp simd
+        for (int q = 0; q < n; ++q)
+          {
+            double       deformed_length;
+            const double e = bond_extension<dim>(b.xi, b.length, ui, uj, q, deformed_length);
+            const double t = (beta_i[q] + beta_j[q]) * e + (a_i[q] + a_j[q]) * b.length;
+            const double w = intact[q] != 0. ? t * b.volume / deformed_length : 0.;
+            values[q]                = w * (b.xi[0] + (uj[0][q] - ui[0][q]));
+            values[chunk_length + q] = w * (b.xi[1] + (uj[1][q] - ui[1][q]));
+            if constexpr (dim == 3)
+              values[2 * chunk_length + q] = w * (b.xi[2] + (uj[2][q] - ui[2][q]));
+            const double ed_i = e - theta_3_i[q] * b.length;
+            const double ed_j = e - theta_3_j[q] * b.length;
+            values[dim * chunk_length + q]       = intact[q] != 0. ? ed_i * ed_i * b.volume : 0.;
+            values[(dim + 1) * chunk_length + q] = intact[q] != 0. ? ed_j * ed_j * b.volume : 0.;
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          add_to_ends(force + d * n_slots + block.first,
+                      force + d * n_slots + block.first + j,
+                      chunk + d * chunk_length,
+                      -1.,
+                      block.n);
+        double *lower_end = deviatoric + block.first, *upper_end = lower_end + j;
+        const double *values_i = chunk + dim * chunk_length,
+                     *values_j = chunk + (dim + 1) * chunk_length;
+#pragma omp simd
+        for (unsigned int q = 0; q < block.n; ++q)
+          lower_end[q] += values_i[q];
+#pragma omp simd
+        for (unsigned int q = 0; q < block.n; ++q)
+          upper_end[q] += values_j[q];
+      });
+    }
+
+    // One instance per dimension and instruction set.
+#define PERIARLEQUIN_STENCIL_PASSES(dim)                                                     \
+  PERIARLEQUIN_KERNEL_CLONES void intact_volume_pass(                                        \
+    const StencilLayout<dim>                                    &layout,                     \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
+    double                                                      *volume,                     \
+    double                                                      *chunk)                      \
+  {                                                                                          \
+    intact_volume_pass_impl<dim>(layout, stencil, volume, chunk);                            \
+  }                                                                                          \
+  PERIARLEQUIN_KERNEL_CLONES void moment_pass(                                               \
+    const StencilLayout<dim>                                    &layout,                     \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
+    const double                                                *u,                          \
+    double                                                      *moment,                     \
+    double                                                      *chunk)                      \
+  {                                                                                          \
+    moment_pass_impl<dim>(layout, stencil, u, moment, chunk);                                \
+  }                                                                                          \
+  PERIARLEQUIN_KERNEL_CLONES void force_pass(                                                \
+    const StencilLayout<dim>                                    &layout,                     \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
+    const double                                                *u,                          \
+    const double                                                *coefficients,               \
+    double                                                      *force,                      \
+    double                                                      *deviatoric,                 \
+    double                                                      *chunk)                      \
+  {                                                                                          \
+    force_pass_impl<dim>(layout, stencil, u, coefficients, force, deviatoric, chunk);        \
+  }
+    PERIARLEQUIN_STENCIL_PASSES(2)
+    PERIARLEQUIN_STENCIL_PASSES(3)
+#undef PERIARLEQUIN_STENCIL_PASSES
+
+    /** Resize @p values to @p n entries, zero where new (stale entries stay finite). */
+    void
+    fit(std::vector<double> &values, const std::size_t n)
+    {
+      if (values.size() != n)
+        values.assign(n, 0.);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::gather_displacements(const StencilLayout<dim>       &layout,
+                                                    ArrayView<const Tensor<1, dim>> u) const
+  {
+    const std::size_t n_slots = layout.n_slots();
+    fit(box_displacement, dim * n_slots);
+    for (unsigned int i = 0; i < layout.slot.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(
+    const BondFamilies<dim>         &bonds,
+    ArrayView<const Tensor<1, dim>> u,
+    std::vector<double>             &scalars) const
+  {
+    const auto       &layout  = bonds.stencil_layout();
+    const std::size_t n_slots = layout.n_slots();
+    chunk.resize((dim + 3) * chunk_length);
+    if (box_volume_version != layout.mask_version() || box_volume.size() != n_slots)
+      {
+        box_volume.assign(n_slots, 0.);
+        intact_volume_pass(layout, bonds.stencil, box_volume.data(), chunk.data());
+        box_volume_version = layout.mask_version();
+      }
+    gather_displacements(layout, u);
+    box_moment.assign(n_slots, 0.);
+    moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), chunk.data());
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      {
+        const std::size_t s     = layout.slot[i];
+        const double      theta = c * box_moment[s] / bonds.weighted_volume[i];
+        scalars[2 * i]          = theta;
+        scalars[2 * i + 1]      = box_moment[s] - theta * box_volume[s] / 3.;
+      }
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::compute_forces_on_stencil(
+    const BondFamilies<dim>         &bonds,
+    ArrayView<const Tensor<1, dim>> u,
+    const std::vector<double>       &scalars,
+    const std::vector<double>       &state_weight,
+    std::vector<Tensor<1, dim>>     &force_density,
+    std::vector<double>             &energy_density) const
+  {
+    const auto       &layout  = bonds.stencil_layout();
+    const std::size_t n_slots = layout.n_slots();
+    compute_coefficients(bonds, make_array_view(scalars), state_weight);
+    fit(box_coefficients, 3 * n_slots);
+    for (unsigned int i = 0; i < bonds.n_total; ++i)
+      for (unsigned int m = 0; m < 3; ++m)
+        box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
+    gather_displacements(layout, u);
+    box_force.assign(dim * n_slots, 0.);
+    box_deviatoric.assign(n_slots, 0.);
+    chunk.resize((dim + 3) * chunk_length);
+    force_pass(layout,
+               bonds.stencil,
+               box_displacement.data(),
+               box_coefficients.data(),
+               box_force.data(),
+               box_deviatoric.data(),
+               chunk.data());
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      {
+        const std::size_t s = layout.slot[i];
+        for (unsigned int d = 0; d < dim; ++d)
+          force_density[i][d] = box_force[d * n_slots + s];
+        const double theta = scalars[2 * i];
+        energy_density[i]  = 0.5 * state_weight[i] * k * theta * theta +
+                            0.5 * coefficients[3 * i] * box_deviatoric[s];
+      }
+  }
+
+  // The class is instantiated in material_model.cc; the members defined here, here.
+#define PERIARLEQUIN_INSTANTIATE(dim)                                                        \
+  template void LinearPeridynamicSolid<dim>::gather_displacements(                           \
+    const StencilLayout<dim> &, ArrayView<const Tensor<1, dim>>) const;                      \
+  template void LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(            \
+    const BondFamilies<dim> &, ArrayView<const Tensor<1, dim>>, std::vector<double> &) const; \
+  template void LinearPeridynamicSolid<dim>::compute_forces_on_stencil(                      \
+    const BondFamilies<dim> &,                                                               \
+    ArrayView<const Tensor<1, dim>>,                                                         \
+    const std::vector<double> &,                                                             \
+    const std::vector<double> &,                                                             \
+    std::vector<Tensor<1, dim>> &,                                                           \
+    std::vector<double> &) const;
+  PERIARLEQUIN_INSTANTIATE(2)
+  PERIARLEQUIN_INSTANTIATE(3)
+#undef PERIARLEQUIN_INSTANTIATE
+} // namespace PeriArlequin

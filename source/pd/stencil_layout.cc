@@ -1,0 +1,139 @@
+#include <periarlequin/pd/bond_families.h>
+#include <periarlequin/pd/stencil_layout.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <limits>
+#include <unordered_map>
+
+namespace PeriArlequin
+{
+  namespace
+  {
+    /** Versions are unique over all layouts, so a cache keyed by one never mistakes a new layout. */
+    std::atomic<unsigned int> next_mask_version{1};
+  } // namespace
+
+  template <int dim>
+  void
+  StencilLayout<dim>::build(const Lattice<dim>                     &lattice,
+                            ArrayView<const types::particle_index> ids,
+                            const BondFamilies<dim>                &bonds)
+  {
+    n_held = ids.size();
+    int reach = 0;
+    for (const auto &entry : bonds.stencil)
+      for (unsigned int d = 0; d < dim; ++d)
+        reach = std::max(reach, std::abs(entry.offset[d]));
+
+    // The box of the held sites, padded by the reach so that every neighbour of a held site
+    // has a slot of its own.
+    std::vector<typename Lattice<dim>::Site> sites(n_held);
+    std::array<int, dim>                     upper;
+    lower.fill(std::numeric_limits<int>::max());
+    upper.fill(std::numeric_limits<int>::min());
+    for (unsigned int i = 0; i < n_held; ++i)
+      {
+        sites[i] = lattice.site(ids[i]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], static_cast<int>(sites[i][d]));
+            upper[d] = std::max(upper[d], static_cast<int>(sites[i][d]));
+          }
+      }
+    n_box_slots = n_held > 0 ? 1 : 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= reach;
+        stride[d] = n_box_slots;
+        n_box_slots *= n_held > 0 ? static_cast<std::size_t>(upper[d] + reach - lower[d] + 1) : 0;
+      }
+
+    slot.resize(n_held);
+    for (unsigned int i = 0; i < n_held; ++i)
+      {
+        slot[i] = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          slot[i] += static_cast<std::size_t>(sites[i][d] - lower[d]) * stride[d];
+      }
+
+    // Runs: the held slots of each lattice line, in the order of the lines.
+    const std::size_t line_length = n_held > 0 ? stride[1] : 1;
+    run_of_line.assign(n_box_slots / line_length, -1);
+    std::vector<std::pair<std::size_t, std::size_t>> extent(run_of_line.size(),
+                                                            {line_length, 0});
+    for (unsigned int i = 0; i < n_held; ++i)
+      {
+        auto &[first, last] = extent[slot[i] / line_length];
+        first               = std::min(first, slot[i] % line_length);
+        last                = std::max(last, slot[i] % line_length);
+      }
+
+    // Half of the offsets: those with a positive slot shift, in the stencil's order.
+    half_offsets.clear();
+    half_of_entry.assign(bonds.stencil.size(), 0);
+    entry_is_half.assign(bonds.stencil.size(), false);
+    std::unordered_map<long, unsigned int> half_of_shift;
+    const auto shift = [&](const std::array<int, dim> &offset) {
+      long s = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        s += offset[d] * static_cast<long>(stride[d]);
+      return s;
+    };
+    for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+      if (shift(bonds.stencil[k].offset) > 0)
+        {
+          half_of_shift[shift(bonds.stencil[k].offset)] = half_offsets.size();
+          half_of_entry[k]                             = half_offsets.size();
+          entry_is_half[k]                             = true;
+          half_offsets.push_back({static_cast<std::size_t>(shift(bonds.stencil[k].offset)), k});
+        }
+    for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+      if (!entry_is_half[k])
+        half_of_entry[k] = half_of_shift.at(-shift(bonds.stencil[k].offset));
+
+    runs.clear();
+    max_run_length = 0;
+    std::size_t mask_size = 0;
+    for (std::size_t line = 0; line < run_of_line.size(); ++line)
+      if (extent[line].first <= extent[line].second)
+        {
+          const unsigned int length = extent[line].second - extent[line].first + 1;
+          run_of_line[line]         = runs.size();
+          runs.push_back({line * line_length + extent[line].first, length, mask_size});
+          mask_size += half_offsets.size() * length;
+          max_run_length = std::max(max_run_length, length);
+        }
+    mask.resize(mask_size);
+    update_mask(bonds);
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::update_mask(const BondFamilies<dim> &bonds)
+  {
+    std::fill(mask.begin(), mask.end(), 0);
+    const std::size_t line_length = n_held > 0 ? stride[1] : 1;
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          const unsigned int k = bonds.stencil_index[n];
+          const std::size_t  s = entry_is_half[k] ? slot[i] : slot[bonds.neighbor[n]];
+          const Run         &run = runs[run_of_line[s / line_length]];
+          mask[run.mask_begin + half_of_entry[k] * std::size_t(run.length) + (s - run.begin)] =
+            bonds.state[n] != BondFamilies<dim>::broken;
+        }
+    version = next_mask_version++;
+  }
+
+  template <int dim>
+  double
+  StencilLayout<dim>::fill_ratio() const
+  {
+    return n_held > 0 ? static_cast<double>(n_box_slots) / n_held : 1.;
+  }
+
+  template class StencilLayout<2>;
+  template class StencilLayout<3>;
+} // namespace PeriArlequin
