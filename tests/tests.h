@@ -279,10 +279,51 @@ namespace PeriArlequinTests
   }
 
   /**
+   * The largest difference between the energy histories @p history and @p reference, per
+   * column relative to the column's largest magnitude in @p reference (columns that stay 0
+   * are compared absolutely: any difference there counts as 1); the magnitudes reported
+   * under @p title.
+   */
+  inline double
+  history_difference(const PeriArlequin::EnergyHistory &history,
+                     const PeriArlequin::EnergyHistory &reference,
+                     const std::string                 &title)
+  {
+    const auto &rows = history.rows(), &reference_rows = reference.rows();
+    AssertThrow(reference_rows.size() == rows.size(),
+                ExcMessage("the runs recorded different numbers of steps"));
+    double worst = 0;
+    for (unsigned int c = 0; c < rows.front().size(); ++c)
+      {
+        double magnitude = 0, difference = 0;
+        for (unsigned int n = 0; n < rows.size(); ++n)
+          {
+            magnitude  = std::max(magnitude, std::abs(reference_rows[n][c]));
+            difference = std::max(difference, std::abs(rows[n][c] - reference_rows[n][c]));
+          }
+        report(title + " " + history.column_names()[c] + " largest magnitude", magnitude);
+        worst = std::max(worst, magnitude > 0 ? difference / magnitude : (difference > 0 ? 1. : 0.));
+      }
+    return worst;
+  }
+
+  /** That the finished run @p simulator changed column @p column (the case is not vacuous). */
+  template <int dim>
+  void
+  require_active_column(const PeriArlequin::Simulator<dim> &simulator,
+                        const std::string                  &title,
+                        const std::string                  &column)
+  {
+    const double last = simulator.get_energy_history().column(column).back();
+    report(title + " " + column + " at the end", last);
+    AssertThrow(last != 0, ExcMessage(title + ": " + column + " stayed 0, the case is vacuous"));
+  }
+
+  /**
    * Run the case given by @p parameters on all ranks and, on rank 0 alone (MPI_COMM_SELF),
-   * once more; return the largest difference between the two energy histories, per column
-   * relative to the column's largest magnitude (the same on every rank). If @p active_column
-   * is given, that column must end non-zero (e.g. broken_bonds: the case did break bonds).
+   * once more; return history_difference() of the two (the same on every rank). If
+   * @p active_column is given, that column must end non-zero (e.g. broken_bonds: the case did
+   * break bonds).
    */
   template <int dim>
   double
@@ -293,35 +334,15 @@ namespace PeriArlequinTests
     auto parallel = make_simulator<dim>(parameters, MPI_COMM_WORLD);
     parallel->run();
     if (!active_column.empty())
-      {
-        const double last = parallel->get_energy_history().column(active_column).back();
-        report(title + " " + active_column + " at the end", last);
-        AssertThrow(last != 0,
-                    ExcMessage(title + ": " + active_column + " stayed 0, the case is vacuous"));
-      }
-    const auto &rows  = parallel->get_energy_history().rows();
-    double      worst = 0;
+      require_active_column(*parallel, title, active_column);
+    double worst = 0;
     if (is_root())
       {
         auto serial = make_simulator<dim>(parameters, MPI_COMM_SELF);
         serial->run();
-        const auto &reference = serial->get_energy_history().rows();
-        AssertThrow(reference.size() == rows.size(),
-                    ExcMessage("the runs recorded different numbers of steps"));
-        for (unsigned int c = 0; c < rows.front().size(); ++c)
-          {
-            double magnitude = 0, difference = 0;
-            for (unsigned int n = 0; n < rows.size(); ++n)
-              {
-                magnitude  = std::max(magnitude, std::abs(reference[n][c]));
-                difference = std::max(difference, std::abs(rows[n][c] - reference[n][c]));
-              }
-            report(title + " " + parallel->get_energy_history().column_names()[c] +
-                     " largest magnitude",
-                   magnitude);
-            if (magnitude > 0)
-              worst = std::max(worst, difference / magnitude);
-          }
+        worst = history_difference(parallel->get_energy_history(),
+                                   serial->get_energy_history(),
+                                   title);
       }
     return Utilities::MPI::max(worst, MPI_COMM_WORLD);
   }

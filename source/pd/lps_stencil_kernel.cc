@@ -1,15 +1,15 @@
 // The LPS dilatation and force passes on the stencil layout of the bonds (see StencilLayout):
 // for each run of slots and each half offset, a loop over contiguous slots that the
-// compiler vectorises (#pragma omp simd, this file is compiled with -fopenmp-simd). Debian's
-// deal.II is built for generic x86-64, so the passes are compiled twice, for AVX2 and for
-// the baseline, and the loader picks one (target_clones); neither uses FMA contraction, so
-// both give the same bits.
+// compiler vectorises (#pragma omp simd; this file is compiled with -fopenmp-simd, no
+// OpenMP runtime). Debian's deal.II is built for generic x86-64, so the passes are compiled
+// for AVX-512, AVX2 and the baseline and the loader picks one (target_clones); the file is
+// compiled without FMA contraction (-ffp-contract=off), so all three give the same bits.
 #include <periarlequin/pd/material_model.h>
 
 #include <algorithm>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#  define PERIARLEQUIN_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
+#  define PERIARLEQUIN_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #  define PERIARLEQUIN_KERNEL_CLONES
 #endif
@@ -30,7 +30,16 @@ namespace PeriArlequin
       std::size_t   first, delta;
       unsigned int  n;
       const std::uint8_t *mask;
+      /**
+       * Whether the pass may add to both ends inside its vector loop: the offset leaves the
+       * lattice line (so a slot gets at most one term per block, in any order the same sum)
+       * and the ends are at least simd_distance slots apart (no two lanes write one slot).
+       */
+      bool direct;
     };
+
+    /** The ends of a block may share a vector of this many lanes only this far apart. */
+    constexpr unsigned int simd_distance = 8;
 
     /**
      * Visit the blocks of @p layout chunk by chunk: @p visit(block) for each run, half offset
@@ -53,6 +62,10 @@ namespace PeriArlequin
             block.length = bond.length;
             block.volume = bond.volume;
             block.delta  = half.delta;
+            bool on_line = true;
+            for (unsigned int d = 1; d < dim; ++d)
+              on_line = on_line && bond.offset[d] == 0;
+            block.direct = !on_line && half.delta >= simd_distance;
             const std::uint8_t *mask =
               layout.mask.data() + run.mask_begin + h * std::size_t(run.length);
             for (unsigned int first = 0; first < run.length; first += chunk_length)
@@ -66,18 +79,18 @@ namespace PeriArlequin
     }
 
     /**
-     * Extension e and deformed length of the bond q of a block, from the displacement
-     * components @p ui at its lower ends and @p uj at its upper ends: the formula of
-     * BondFamilies::extension() term by term, so both layouts give the same bits.
+     * The deformed length |xi + eta| of the bond q of a block, from the displacement
+     * components @p ui at its lower ends and @p uj at its upper ends, and the numerator
+     * 2 xi.eta + eta.eta of its extension e = numerator / (|xi + eta| + |xi|): the terms of
+     * BondFamilies::extension().
      */
     template <int dim>
     inline __attribute__((always_inline)) double
-    bond_extension(const double *xi,
-                   const double  length,
-                   const double *const *ui,
-                   const double *const *uj,
-                   const int     q,
-                   double       &deformed_length)
+    deformed_length(const double        *xi,
+                    const double *const *ui,
+                    const double *const *uj,
+                    const int            q,
+                    double              &numerator)
     {
       // Component by component, without a loop: a loop here keeps the compiler from
       // vectorising over q.
@@ -93,8 +106,8 @@ namespace PeriArlequin
       add(1);
       if constexpr (dim == 3)
         add(2);
-      deformed_length = std::sqrt(length_squared);
-      return (2. * xi_eta + eta_eta) / (deformed_length + length);
+      numerator = 2. * xi_eta + eta_eta;
+      return std::sqrt(length_squared);
     }
 
     /** The pointers to the @p dim components of @p values (n_slots each) at slot @p first. */
@@ -119,13 +132,13 @@ namespace PeriArlequin
     /** Add the chunk's values to the lower ends (sign +1) and to the upper ends. */
     inline __attribute__((always_inline)) void
     add_to_ends(double *lower_end, double *upper_end, const double *values,
-                const double upper_sign, const unsigned int n)
+                const double upper_sign, const int n)
     {
 #pragma omp simd
-      for (unsigned int q = 0; q < n; ++q)
+      for (int q = 0; q < n; ++q)
         lower_end[q] += values[q];
 #pragma omp simd
-      for (unsigned int q = 0; q < n; ++q)
+      for (int q = 0; q < n; ++q)
         upper_end[q] += upper_sign * values[q];
     }
 
@@ -165,14 +178,28 @@ namespace PeriArlequin
         const int n = b.n;
         double *__restrict values = chunk, *__restrict intact = chunk + chunk_length;
         unpack_mask(mask, n, intact);
+        const auto term = [&](const int q) __attribute__((always_inline)) {
+          double       numerator;
+          const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
+          const double e = numerator / (l + b.length);
+          return intact[q] != 0. ? b.length * e * b.volume : 0.;
+        };
+        double *moment_i = moment + b.first, *moment_j = moment_i + b.delta;
+        if (b.direct)
+          {
+#pragma omp simd safelen(simd_distance)
+            for (int q = 0; q < n; ++q)
+              {
+                const double m = term(q);
+                moment_i[q] += m;
+                moment_j[q] += m;
+              }
+            return;
+          }
 #pragma omp simd
         for (int q = 0; q < n; ++q)
-          {
-            double       deformed_length;
-            const double e = bond_extension<dim>(b.xi, b.length, ui, uj, q, deformed_length);
-            values[q]      = intact[q] != 0. ? b.length * e * b.volume : 0.;
-          }
-        add_to_ends(moment + block.first, moment + block.first + block.delta, chunk, 1., block.n);
+          values[q] = term(q);
+        add_to_ends(moment_i, moment_j, values, 1., n);
       });
     }
 
@@ -206,37 +233,76 @@ namespace PeriArlequin
         const int n = b.n;
         double *__restrict values = chunk, *__restrict intact = chunk + (dim + 2) * chunk_length;
         unpack_mask(mask, n, intact);
+        // Pair force components p and both ends' deviatoric terms of bond q.
+        const auto terms = [&](const int q, double &p_0, double &p_1, double &p_2,
+                               double &dev_i, double &dev_j) __attribute__((always_inline)) {
+            // One division for the two quotients e = numerator / (l + |xi|) and 1 / l.
+            double       numerator;
+            const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
+            const double r = 1. / ((l + b.length) * l);
+            const double e = numerator * (l * r);
+            const double t = (beta_i[q] + beta_j[q]) * e + (a_i[q] + a_j[q]) * b.length;
+            const double w = intact[q] != 0. ? t * b.volume * ((l + b.length) * r) : 0.;
+            p_0            = w * (b.xi[0] + (uj[0][q] - ui[0][q]));
+            p_1            = w * (b.xi[1] + (uj[1][q] - ui[1][q]));
+            if constexpr (dim == 3)
+              p_2 = w * (b.xi[2] + (uj[2][q] - ui[2][q]));
+            const double ed_i = e - theta_3_i[q] * b.length;
+            const double ed_j = e - theta_3_j[q] * b.length;
+            dev_i             = intact[q] != 0. ? ed_i * ed_i * b.volume : 0.;
+            dev_j             = intact[q] != 0. ? ed_j * ed_j * b.volume : 0.;
+          };
+        double *f_i[dim], *f_j[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            f_i[d] = force + d * n_slots + b.first;
+            f_j[d] = f_i[d] + j;
+          }
+        double *deviatoric_i = deviatoric + b.first, *deviatoric_j = deviatoric_i + j;
+        if (b.direct)
+          {
+#pragma omp simd safelen(simd_distance)
+            for (int q = 0; q < n; ++q)
+              {
+                double p_0, p_1, p_2 = 0, dev_i, dev_j;
+                terms(q, p_0, p_1, p_2, dev_i, dev_j);
+                f_i[0][q] += p_0;
+                f_j[0][q] -= p_0;
+                f_i[1][q] += p_1;
+                f_j[1][q] -= p_1;
+                if constexpr (dim == 3)
+                  {
+                    f_i[2][q] += p_2;
+                    f_j[2][q] -= p_2;
+                  }
+                deviatoric_i[q] += dev_i;
+                deviatoric_j[q] += dev_j;
+              }
+            return;
+          }
 #pragma omp simd
         for (int q = 0; q < n; ++q)
           {
-            double       deformed_length;
-            const double e = bond_extension<dim>(b.xi, b.length, ui, uj, q, deformed_length);
-            const double t = (beta_i[q] + beta_j[q]) * e + (a_i[q] + a_j[q]) * b.length;
-            const double w = intact[q] != 0. ? t * b.volume / deformed_length : 0.;
-            values[q]                = w * (b.xi[0] + (uj[0][q] - ui[0][q]));
-            values[chunk_length + q] = w * (b.xi[1] + (uj[1][q] - ui[1][q]));
+            double p_2 = 0;
+            terms(q,
+                  values[q],
+                  values[chunk_length + q],
+                  p_2,
+                  values[dim * chunk_length + q],
+                  values[(dim + 1) * chunk_length + q]);
             if constexpr (dim == 3)
-              values[2 * chunk_length + q] = w * (b.xi[2] + (uj[2][q] - ui[2][q]));
-            const double ed_i = e - theta_3_i[q] * b.length;
-            const double ed_j = e - theta_3_j[q] * b.length;
-            values[dim * chunk_length + q]       = intact[q] != 0. ? ed_i * ed_i * b.volume : 0.;
-            values[(dim + 1) * chunk_length + q] = intact[q] != 0. ? ed_j * ed_j * b.volume : 0.;
+              values[2 * chunk_length + q] = p_2;
           }
         for (unsigned int d = 0; d < dim; ++d)
-          add_to_ends(force + d * n_slots + block.first,
-                      force + d * n_slots + block.first + j,
-                      chunk + d * chunk_length,
-                      -1.,
-                      block.n);
-        double *lower_end = deviatoric + block.first, *upper_end = lower_end + j;
-        const double *values_i = chunk + dim * chunk_length,
-                     *values_j = chunk + (dim + 1) * chunk_length;
+          add_to_ends(f_i[d], f_j[d], values + d * chunk_length, -1., n);
+        const double *values_i = values + dim * chunk_length,
+                     *values_j = values + (dim + 1) * chunk_length;
 #pragma omp simd
-        for (unsigned int q = 0; q < block.n; ++q)
-          lower_end[q] += values_i[q];
+        for (int q = 0; q < n; ++q)
+          deviatoric_i[q] += values_i[q];
 #pragma omp simd
-        for (unsigned int q = 0; q < block.n; ++q)
-          upper_end[q] += values_j[q];
+        for (int q = 0; q < n; ++q)
+          deviatoric_j[q] += values_j[q];
       });
     }
 

@@ -44,7 +44,7 @@ namespace PeriArlequin
     , communicator(triangulation.get_communicator())
     , mapping(1)
     , general_cells(!geometry.mesh_file.empty())
-    , ghosts(particle_handler)
+    , ghosts(particle_handler, communicator)
     , model(std::move(model))
     , fracture(std::move(fracture))
     , prescribed(parameters)

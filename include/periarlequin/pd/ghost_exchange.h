@@ -2,9 +2,12 @@
 #define periarlequin_pd_ghost_exchange_h
 
 #include <deal.II/base/array_view.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <map>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -15,21 +18,24 @@ namespace PeriArlequin
   /**
    * The local numbering of the particles of one rank and the exchange of per-particle
    * values with the ghost particles. Local number i runs over the owned particles in the
-   * handler's order, then over the ghosts; it is the index of every flat PD array.
+   * handler's order, then over the ghosts in the order of their owners' numbering; it is the
+   * index of every flat PD array.
    *
    * reinit() after the particle set changed (insertion, sort, repartition) builds the ghost
-   * particles with a cached communication pattern (exchange_ghost_particles(true)) and
-   * renumbers; every update_ghosts() in between reuses that fixed pattern
-   * (update_ghost_particles()), sending the owned values through the particle properties and
-   * reading the ghosts' back in the same order.
+   * particles (exchange_ghost_particles(true)), numbers the owned particles of all ranks
+   * consecutively and builds from that numbering a fixed communication pattern, a
+   * Utilities::MPI::Partitioner. Every update_ghosts() in between sends through it only the
+   * values asked for, straight from and into the flat arrays: no particle is touched, and
+   * no id, location or other property travels.
    */
   template <int dim>
   class GhostExchange
   {
   public:
-    explicit GhostExchange(Particles::ParticleHandler<dim> &particle_handler);
+    /** The particles of @p particle_handler, distributed over @p communicator. */
+    GhostExchange(Particles::ParticleHandler<dim> &particle_handler, const MPI_Comm communicator);
 
-    /** Ghost particles and local numbers for the current particle set. */
+    /** Ghost particles, local numbers and the communication pattern for the particle set. */
     void
     reinit();
 
@@ -58,13 +64,35 @@ namespace PeriArlequin
     void
     update_ghosts(ArrayView<Tensor<1, dim>> values);
 
+    /**
+     * How many (particle, rank) pairs this rank sends per value: an update of n values a
+     * particle sends 8 n times this many bytes.
+     */
+    unsigned int
+    n_sent_particles() const;
+
+
   private:
+    /**
+     * The pattern for @p n_per_particle values a particle (built, collectively, on first
+     * use; the one for a single value by reinit()).
+     */
+    const Utilities::MPI::Partitioner &
+    partitioner(const unsigned int n_per_particle);
+
     Particles::ParticleHandler<dim>                        &particle_handler;
+    const MPI_Comm                                          communicator;
     unsigned int                                            n_owned_particles = 0;
     std::vector<types::particle_index>                      particle_ids;
     std::vector<Point<dim>>                                 positions;
     std::unordered_map<types::particle_index, unsigned int> index_of_id;
-    std::vector<double>                                     buffer;
+    /** The consecutive number of the first owned particle, and those of the ghosts. */
+    types::global_dof_index                                 first_index = 0;
+    std::vector<types::global_dof_index>                    ghost_indices;
+    types::global_dof_index                                 n_global      = 0;
+    std::map<unsigned int, std::unique_ptr<Utilities::MPI::Partitioner>> partitioners;
+    std::vector<double>                                     send_buffer;
+    std::vector<MPI_Request>                                requests;
   };
 } // namespace PeriArlequin
 
