@@ -80,7 +80,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads per rank: the cores of a node shared among its ranks, at most DEAL_II_NUM_THREADS.
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   try
     {
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;

@@ -2,6 +2,7 @@
 #include <periarlequin/simulator.h>
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 
@@ -386,10 +387,19 @@ namespace PeriArlequin
           << (fe_zone ? fe_zone->n_dofs() : 0) << " FE DoFs, "
           << (pd_zone ? pd_zone->n_global_particles() : 0) << " PD particles ("
           << (pd_zone ? pd_zone->n_global_bonds() : 0) << " bonds) on "
-          << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)\n"
+          << Utilities::MPI::n_mpi_processes(communicator) << " rank(s) x "
+          << MultithreadInfo::n_threads() << " thread(s)\n"
           << "  time step " << dt << " s, estimated stable step " << stable_time_step
           << " s, longitudinal wave speed " << material.longitudinal_wave_speed(dim)
           << " m/s" << std::endl;
+    if (pd_zone)
+      pcout << "  PD force kernel: "
+            << (Utilities::MPI::min(int(pd_zone->get_bonds().uses_stencil()), communicator) ?
+                  "lattice stencil" :
+                  Utilities::MPI::max(int(pd_zone->get_bonds().uses_stencil()), communicator) ?
+                  "lattice stencil on some ranks, bond lists on others" :
+                  "bond lists")
+            << std::endl;
     if (pd_zone && pd_parameters.fracture)
       {
         pcout << "  fracture criterion: " << pd_parameters.fracture_criterion;

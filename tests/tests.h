@@ -382,15 +382,16 @@ namespace PeriArlequinTests
   }
 
   /**
-   * Run a test body under MPI; a failed check or any error gives exit code 1. On several
+   * Run a test body under MPI with at most @p n_threads threads per rank; a failed check or
+   * any error gives exit code 1. On several
    * ranks a failure ends all of them (MPI_Abort): a rank that failed alone would otherwise
    * leave the others waiting in their next collective call.
    */
   template <typename Body>
   int
-  run_test(int argc, char **argv, const Body &body)
+  run_test(int argc, char **argv, const Body &body, const unsigned int n_threads = 1)
   {
-    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, n_threads);
     try
       {
         body();

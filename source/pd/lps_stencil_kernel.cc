@@ -6,6 +6,8 @@
 // compiled without FMA contraction (-ffp-contract=off), so all three give the same bits.
 #include <periarlequin/pd/material_model.h>
 
+#include <deal.II/base/parallel.h>
+
 #include <algorithm>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
@@ -41,20 +43,29 @@ namespace PeriArlequin
     /** The ends of a block may share a vector of this many lanes only this far apart. */
     constexpr unsigned int simd_distance = 8;
 
+    /** Runs [first, end) of a layout, and the scratch of a thread for a chunk of a run. */
+    struct RunRange
+    {
+      unsigned int first, end;
+      double      *chunk;
+    };
+
     /**
-     * Visit the blocks of @p layout chunk by chunk: @p visit(block) for each run, half offset
-     * and chunk of the run, in the order that makes the sums independent of the partition.
+     * Visit the blocks of the runs @p range of @p layout chunk by chunk: @p visit(block) for
+     * each run, half offset and chunk of the run, in this order.
      */
     template <int dim, typename Visitor>
     inline __attribute__((always_inline)) void
-    for_each_block(const StencilLayout<dim>                               &layout,
+    for_each_block(const StencilLayout<dim>                                    &layout,
                    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                   const Visitor                                          &visit)
+                   const RunRange                                              &range,
+                   const Visitor                                               &visit)
     {
       Block<dim> block;
-      for (const auto &run : layout.runs)
+      for (unsigned int r = range.first; r < range.end; ++r)
         for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
           {
+            const auto &run  = layout.runs[r];
             const auto &half = layout.half_offsets[h];
             const auto &bond = stencil[half.stencil_index];
             for (unsigned int d = 0; d < dim; ++d)
@@ -147,10 +158,11 @@ namespace PeriArlequin
     inline __attribute__((always_inline)) void
     intact_volume_pass_impl(const StencilLayout<dim>                                    &layout,
                             const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                            double *volume,
-                            double *chunk)
+                            double         *volume,
+                            const RunRange &range)
     {
-      for_each_block(layout, stencil, [&](const Block<dim> &block) __attribute__((always_inline)) {
+      double *const chunk = range.chunk;
+      for_each_block(layout, stencil, range, [&](const Block<dim> &block) __attribute__((always_inline)) {
         const double weighted = block.length * block.length * block.volume;
 #pragma omp simd
         for (unsigned int q = 0; q < block.n; ++q)
@@ -164,12 +176,13 @@ namespace PeriArlequin
     inline __attribute__((always_inline)) void
     moment_pass_impl(const StencilLayout<dim>                                    &layout,
                      const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                     const double *u,
-                     double       *moment,
-                     double       *chunk)
+                     const double   *u,
+                     double         *moment,
+                     const RunRange &range)
     {
       const std::size_t n_slots = layout.n_slots();
-      for_each_block(layout, stencil, [=](const Block<dim> &block) __attribute__((always_inline)) {
+      double *const     chunk   = range.chunk;
+      for_each_block(layout, stencil, range, [=](const Block<dim> &block) __attribute__((always_inline)) {
         const Block<dim>    b    = block;
         const std::uint8_t *mask = b.mask;
         const double       *ui[dim], *uj[dim];
@@ -214,14 +227,15 @@ namespace PeriArlequin
                     const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
                     const double *u,
                     const double *coefficients,
-                    double       *force,
-                    double       *deviatoric,
-                    double       *chunk)
+                    double         *force,
+                    double         *deviatoric,
+                    const RunRange &range)
     {
       const std::size_t n_slots = layout.n_slots();
+      double *const     chunk   = range.chunk;
       const double     *beta = coefficients, *a = coefficients + n_slots,
                    *theta_3 = coefficients + 2 * n_slots;
-      for_each_block(layout, stencil, [=](const Block<dim> &block) __attribute__((always_inline)) {
+      for_each_block(layout, stencil, range, [=](const Block<dim> &block) __attribute__((always_inline)) {
         const Block<dim>    b    = block;
         const std::size_t   j    = b.delta;
         const std::uint8_t *mask = b.mask;
@@ -312,18 +326,18 @@ namespace PeriArlequin
     const StencilLayout<dim>                                    &layout,                     \
     const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
     double                                                      *volume,                     \
-    double                                                      *chunk)                      \
+    const RunRange                                              &range)                      \
   {                                                                                          \
-    intact_volume_pass_impl<dim>(layout, stencil, volume, chunk);                            \
+    intact_volume_pass_impl<dim>(layout, stencil, volume, range);                            \
   }                                                                                          \
   PERIARLEQUIN_KERNEL_CLONES void moment_pass(                                               \
     const StencilLayout<dim>                                    &layout,                     \
     const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
     const double                                                *u,                          \
     double                                                      *moment,                     \
-    double                                                      *chunk)                      \
+    const RunRange                                              &range)                      \
   {                                                                                          \
-    moment_pass_impl<dim>(layout, stencil, u, moment, chunk);                                \
+    moment_pass_impl<dim>(layout, stencil, u, moment, range);                                \
   }                                                                                          \
   PERIARLEQUIN_KERNEL_CLONES void force_pass(                                                \
     const StencilLayout<dim>                                    &layout,                     \
@@ -332,13 +346,42 @@ namespace PeriArlequin
     const double                                                *coefficients,               \
     double                                                      *force,                      \
     double                                                      *deviatoric,                 \
-    double                                                      *chunk)                      \
+    const RunRange                                              &range)                      \
   {                                                                                          \
-    force_pass_impl<dim>(layout, stencil, u, coefficients, force, deviatoric, chunk);        \
+    force_pass_impl<dim>(layout, stencil, u, coefficients, force, deviatoric, range);        \
   }
     PERIARLEQUIN_STENCIL_PASSES(2)
     PERIARLEQUIN_STENCIL_PASSES(3)
 #undef PERIARLEQUIN_STENCIL_PASSES
+
+    /**
+     * Call @p pass(range) on the runs of every slab of @p layout (StencilLayout::slabs):
+     * those of even index at once on the threads of this rank (TBB), then those of odd index.
+     * Each slab's runs go to one thread, in order, so the sums do not depend on the threads.
+     */
+    template <int dim, typename Pass>
+    void
+    for_each_slab(const StencilLayout<dim> &layout, const Pass &pass)
+    {
+      for (const auto &ranges : layout.slabs)
+        parallel::apply_to_subranges(
+          0u,
+          static_cast<unsigned int>(ranges.size()),
+          [&](const unsigned int first, const unsigned int end) {
+            double chunk[(dim + 3) * chunk_length];
+            for (unsigned int k = first; k < end; ++k)
+              pass(RunRange{ranges[k].first, ranges[k].second, chunk});
+          },
+          1);
+    }
+
+    /** Call @p work(first, end) on subranges of [0, @p n) on the threads of this rank. */
+    template <typename Work>
+    void
+    in_parallel(const unsigned int n, const Work &work)
+    {
+      parallel::apply_to_subranges(0u, n, work, 4096);
+    }
 
     /** Resize @p values to @p n entries, zero where new (stale entries stay finite). */
     void
@@ -356,9 +399,11 @@ namespace PeriArlequin
   {
     const std::size_t n_slots = layout.n_slots();
     fit(box_displacement, dim * n_slots);
-    for (unsigned int i = 0; i < layout.slot.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
+    in_parallel(layout.slot.size(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
+    });
   }
 
   template <int dim>
@@ -370,23 +415,28 @@ namespace PeriArlequin
   {
     const auto       &layout  = bonds.stencil_layout();
     const std::size_t n_slots = layout.n_slots();
-    chunk.resize((dim + 3) * chunk_length);
     if (box_volume_version != layout.mask_version() || box_volume.size() != n_slots)
       {
         box_volume.assign(n_slots, 0.);
-        intact_volume_pass(layout, bonds.stencil, box_volume.data(), chunk.data());
+        for_each_slab(layout, [&](const RunRange &range) {
+          intact_volume_pass(layout, bonds.stencil, box_volume.data(), range);
+        });
         box_volume_version = layout.mask_version();
       }
     gather_displacements(layout, u);
     box_moment.assign(n_slots, 0.);
-    moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), chunk.data());
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      {
-        const std::size_t s     = layout.slot[i];
-        const double      theta = c * box_moment[s] / bonds.weighted_volume[i];
-        scalars[2 * i]          = theta;
-        scalars[2 * i + 1]      = box_moment[s] - theta * box_volume[s] / 3.;
-      }
+    for_each_slab(layout, [&](const RunRange &range) {
+      moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), range);
+    });
+    in_parallel(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          const std::size_t s     = layout.slot[i];
+          const double      theta = c * box_moment[s] / bonds.weighted_volume[i];
+          scalars[2 * i]          = theta;
+          scalars[2 * i + 1]      = box_moment[s] - theta * box_volume[s] / 3.;
+        }
+    });
   }
 
   template <int dim>
@@ -403,29 +453,34 @@ namespace PeriArlequin
     const std::size_t n_slots = layout.n_slots();
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     fit(box_coefficients, 3 * n_slots);
-    for (unsigned int i = 0; i < bonds.n_total; ++i)
-      for (unsigned int m = 0; m < 3; ++m)
-        box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
+    in_parallel(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        for (unsigned int m = 0; m < 3; ++m)
+          box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
+    });
     gather_displacements(layout, u);
     box_force.assign(dim * n_slots, 0.);
     box_deviatoric.assign(n_slots, 0.);
-    chunk.resize((dim + 3) * chunk_length);
-    force_pass(layout,
-               bonds.stencil,
-               box_displacement.data(),
-               box_coefficients.data(),
-               box_force.data(),
-               box_deviatoric.data(),
-               chunk.data());
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      {
-        const std::size_t s = layout.slot[i];
-        for (unsigned int d = 0; d < dim; ++d)
-          force_density[i][d] = box_force[d * n_slots + s];
-        const double theta = scalars[2 * i];
-        energy_density[i]  = 0.5 * state_weight[i] * k * theta * theta +
-                            0.5 * coefficients[3 * i] * box_deviatoric[s];
-      }
+    for_each_slab(layout, [&](const RunRange &range) {
+      force_pass(layout,
+                 bonds.stencil,
+                 box_displacement.data(),
+                 box_coefficients.data(),
+                 box_force.data(),
+                 box_deviatoric.data(),
+                 range);
+    });
+    in_parallel(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          const std::size_t s = layout.slot[i];
+          for (unsigned int d = 0; d < dim; ++d)
+            force_density[i][d] = box_force[d * n_slots + s];
+          const double theta = scalars[2 * i];
+          energy_density[i]  = 0.5 * state_weight[i] * k * theta * theta +
+                              0.5 * coefficients[3 * i] * box_deviatoric[s];
+        }
+    });
   }
 
   // The class is instantiated in material_model.cc; the members defined here, here.

@@ -107,6 +107,23 @@ namespace PeriArlequin
         }
     mask.resize(mask_size);
     update_mask(bonds);
+
+    // Slabs of the outermost coordinate, counted from the lattice's origin.
+    const unsigned int thickness = std::max(reach, 1);
+    for (auto &ranges : slabs)
+      ranges.clear();
+    long previous_slab = -1;
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      {
+        const long coordinate = static_cast<long>(runs[r].begin / stride[dim - 1]) + lower[dim - 1];
+        const long slab       = coordinate / thickness;
+        auto      &ranges     = slabs[slab % 2];
+        if (slab != previous_slab)
+          ranges.emplace_back(r, r + 1);
+        else
+          ranges.back().second = r + 1;
+        previous_slab = slab;
+      }
   }
 
   template <int dim>

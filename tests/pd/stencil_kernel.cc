@@ -14,12 +14,17 @@
 //    of the largest magnitude (round-off grows over the steps; a bond broken in one run and
 //    not in the other would change the count by 1, relative 1/count >> 1e-10; measured
 //    1.1e-14 with 1872 broken bond ends).
+//  - Threads: the stencil kernel on 2 threads gives the same bits as on 1 (a slab of the
+//    layout goes to one thread, and the slabs' order does not depend on the threads), in
+//    every static case: tolerance 0.
 // On 2 ranks the same numbers come out (the test's .mpirun=2 output is the 1-rank one).
 
 #include "../tests.h"
 
 #include "../coupling/coupled_cases.h"
 #include "plate.h"
+
+#include <tbb/task_arena.h>
 
 using namespace PeriArlequinTests;
 
@@ -65,8 +70,23 @@ namespace
                 ExcMessage("the kernels were not the ones asked for"));
     AssertThrow(a.n_owned_particles() == b.n_owned_particles(),
                 ExcMessage("the two runs hold different particles"));
+    // The stencil kernel on one thread, then on all (2) of them.
+    tbb::task_arena one_thread(1);
+    one_thread.execute([&] { a.compute_internal_forces(); });
+    const std::vector<Tensor<1, dim>> one_thread_force(a.force_densities().begin(),
+                                                       a.force_densities().end());
+    const std::vector<double>         one_thread_energy(a.energy_densities().begin(),
+                                                a.energy_densities().end());
     a.compute_internal_forces();
     b.compute_internal_forces();
+    unsigned int differing = 0;
+    for (unsigned int i = 0; i < a.n_owned_particles(); ++i)
+      differing += !(a.force_densities()[i] == one_thread_force[i] &&
+                     a.energy_densities()[i] == one_thread_energy[i]);
+    check_below(title + ", stencil kernel, particles whose densities differ between 1 and " +
+                  std::to_string(MultithreadInfo::n_threads()) + " threads",
+                Utilities::MPI::sum(differing, MPI_COMM_WORLD),
+                0.5);
     report(title + " broken bonds", a.n_global_broken_bonds());
     check_below(title + ", force densities, stencil vs bond list, relative",
                 relative_difference(a.force_densities(), b.force_densities()),
@@ -89,7 +109,12 @@ namespace
 int
 main(int argc, char **argv)
 {
-  return run_test(argc, argv, [] {
+  return run_test(
+    argc,
+    argv,
+    [] {
+      AssertThrow(MultithreadInfo::n_threads() == 2,
+                  ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
     compare_densities<2>("2D plane stress, notched block with a hole", notched_block(""));
     compare_densities<2>("2D plane strain, notched block with a hole",
                          notched_block("plane strain"));
@@ -120,5 +145,6 @@ main(int argc, char **argv)
                                    list->get_energy_history(),
                                    "pre-cracked plate"),
                 1e-10);
-  });
+    },
+    2);
 }

@@ -197,10 +197,10 @@ namespace PeriArlequin
     /**
      * Scratch of the stencil kernels, per box slot: displacement components, the three
      * force-state coefficients, extension moment, intact weighted volume (for the layout's
-     * mask version box_volume_version), force components, deviatoric sum; and per run chunk.
+     * mask version box_volume_version), force components, deviatoric sum.
      */
     mutable std::vector<double> box_displacement, box_coefficients, box_moment, box_volume,
-      box_force, box_deviatoric, chunk;
+      box_force, box_deviatoric;
     mutable unsigned int box_volume_version = 0;
   };
 } // namespace PeriArlequin

@@ -6,9 +6,10 @@
 
 #include <periarlequin/pd/lattice.h>
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace PeriArlequin
@@ -96,6 +97,16 @@ namespace PeriArlequin
     std::vector<std::uint8_t> mask;
     /** The longest run. */
     unsigned int max_run_length = 0;
+
+    /**
+     * The runs by slab: a slab is the lattice lines whose outermost lattice coordinate
+     * (z in 3D, y in 2D) divided by the stencil's reach has one value k. A bond from a run of
+     * slab k ends in slab k or k + 1, so the slabs of even k can be done at once, by
+     * different threads, then those of odd k. slabs[p] holds the [first, end) run ranges of
+     * the slabs with k % 2 = p, in order. k counts from the lattice's origin, so that a
+     * particle gets its terms in the same order on every partition (for any thread count).
+     */
+    std::array<std::vector<std::pair<unsigned int, unsigned int>>, 2> slabs;
 
   private:
     std::array<std::size_t, dim> stride;
