@@ -392,6 +392,17 @@ namespace PeriArlequin
           << "  time step " << dt << " s, estimated stable step " << stable_time_step
           << " s, longitudinal wave speed " << material.longitudinal_wave_speed(dim)
           << " m/s" << std::endl;
+    if (pd_zone && Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        // What a step's two ghost updates bring in: displacements and the model's scalars.
+        const unsigned int n_ghosts =
+          pd_zone->reference_positions().size() - pd_zone->n_owned_particles();
+        const unsigned int values = dim + pd_zone->get_material_model().n_particle_scalars();
+        pcout << "  PD ghost particles: " << Utilities::MPI::sum(n_ghosts, communicator)
+              << " in all, at most " << Utilities::MPI::max(n_ghosts, communicator)
+              << " on a rank (" << 8e-3 * values * Utilities::MPI::max(n_ghosts, communicator)
+              << " kB received a step)" << std::endl;
+      }
     if (pd_zone)
       pcout << "  PD force kernel: "
             << (Utilities::MPI::min(int(pd_zone->get_bonds().uses_stencil()), communicator) ?

@@ -52,7 +52,8 @@ namespace PeriArlequin
 
     /**
      * Visit the blocks of the runs @p range of @p layout chunk by chunk: @p visit(block) for
-     * each run, half offset and chunk of the run, in this order.
+     * each run, half offset and chunk of the run, in this order, skipping blocks without an
+     * active bond (they would add zeros).
      */
     template <int dim, typename Visitor>
     inline __attribute__((always_inline)) void
@@ -65,6 +66,8 @@ namespace PeriArlequin
       for (unsigned int r = range.first; r < range.end; ++r)
         for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
           {
+            if (!layout.block_active[r * layout.half_offsets.size() + h])
+              continue;
             const auto &run  = layout.runs[r];
             const auto &half = layout.half_offsets[h];
             const auto &bond = stencil[half.stencil_index];

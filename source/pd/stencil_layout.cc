@@ -141,6 +141,15 @@ namespace PeriArlequin
           mask[run.mask_begin + half_of_entry[k] * std::size_t(run.length) + (s - run.begin)] =
             bonds.state[n] != BondFamilies<dim>::broken;
         }
+    const std::size_t n_half = half_offsets.size();
+    block_active.assign(runs.size() * n_half, 0);
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      for (std::size_t h = 0; h < n_half; ++h)
+        {
+          const auto first = mask.begin() + runs[r].mask_begin + h * runs[r].length;
+          block_active[r * n_half + h] =
+            std::any_of(first, first + runs[r].length, [](const std::uint8_t m) { return m != 0; });
+        }
     version = next_mask_version++;
   }
 

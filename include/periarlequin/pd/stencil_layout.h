@@ -95,6 +95,11 @@ namespace PeriArlequin
     std::vector<Run>         runs;
     std::vector<HalfOffset>  half_offsets;
     std::vector<std::uint8_t> mask;
+    /**
+     * Per (run, half offset), run-major: whether the block holds an intact bond with an owned
+     * end. The passes skip the others (most of the blocks of ghost lines).
+     */
+    std::vector<std::uint8_t> block_active;
     /** The longest run. */
     unsigned int max_run_length = 0;
 
