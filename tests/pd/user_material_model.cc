@@ -11,6 +11,8 @@
 // parameter reached the model).
 // The strain is 1e-4 because this simple model computes the stretch as a difference of
 // lengths, whose round-off is 1e-16 / strain relative.
+// The model has no stencil kernel: the automatic force kernel gives it the bond lists, and
+// asking for the stencil (Peridynamics/Force kernel = stencil) is refused by name.
 
 #include "../tests.h"
 
@@ -140,7 +142,28 @@ check_user_model(const double stiffness_factor)
       << quiet_output();
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();
-  auto        &pd    = *simulator->get_pd_zone();
+  auto &pd = *simulator->get_pd_zone();
+  AssertThrow(!pd.get_bonds().uses_stencil(),
+              ExcMessage("a model without a stencil kernel was given the stencil layout"));
+  if (stiffness_factor == 1.)
+    {
+      bool refused = false;
+      try
+        {
+          make_simulator<dim>(prm.str() +
+                              "subsection Peridynamics\n  set Force kernel = stencil\nend\n")
+            ->setup();
+        }
+      catch (const std::exception &error)
+        {
+          refused = std::string(error.what()).find("Peridynamics/Force kernel") != std::string::npos;
+        }
+      AssertThrow(refused,
+                  ExcMessage("Force kernel = stencil with a model without a stencil kernel was "
+                             "not refused by name"));
+      verdicts() << dim << "D calibrated PMB (user model): bond lists under the automatic "
+                 << "kernel, the stencil refused by name" << std::endl;
+    }
   const double L     = dim == 2 ? 0.02 : 0.016, reach = 3.015 * dx + 0.5 * dx;
   double       inner = 0, largest = 0, energy = 0;
   for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
