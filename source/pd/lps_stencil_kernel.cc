@@ -33,9 +33,10 @@ namespace PeriArlequin
       unsigned int  n;
       const std::uint8_t *mask;
       /**
-       * Whether the pass may add to both ends inside its vector loop: the offset leaves the
-       * lattice line (so a slot gets at most one term per block, in any order the same sum)
-       * and the ends are at least simd_distance slots apart (no two lanes write one slot).
+       * Whether the pass may add to both ends inside its vector loop: the ends are at least
+       * simd_distance slots apart, so no two lanes write one slot and a slot's terms come in
+       * the order of the slots (else the pass goes through the chunk, upper ends first, in
+       * the same order).
        */
       bool direct;
     };
@@ -76,10 +77,7 @@ namespace PeriArlequin
             block.length = bond.length;
             block.volume = bond.volume;
             block.delta  = half.delta;
-            bool on_line = true;
-            for (unsigned int d = 1; d < dim; ++d)
-              on_line = on_line && bond.offset[d] == 0;
-            block.direct = !on_line && half.delta >= simd_distance;
+            block.direct = half.delta >= simd_distance;
             const std::uint8_t *mask =
               layout.mask.data() + run.mask_begin + h * std::size_t(run.length);
             for (unsigned int first = 0; first < run.length; first += chunk_length)
@@ -143,17 +141,21 @@ namespace PeriArlequin
         intact[q] = mask[q];
     }
 
-    /** Add the chunk's values to the lower ends (sign +1) and to the upper ends. */
+    /**
+     * Add the chunk's values to the upper ends (times @p upper_sign), then to the lower ends:
+     * a slot that is both gets its lower neighbour's term first, as in a loop over the slots
+     * in order, whatever the chunk boundaries (they depend on where a rank's run starts).
+     */
     inline __attribute__((always_inline)) void
     add_to_ends(double *lower_end, double *upper_end, const double *values,
                 const double upper_sign, const int n)
     {
 #pragma omp simd
       for (int q = 0; q < n; ++q)
-        lower_end[q] += values[q];
+        upper_end[q] += upper_sign * values[q];
 #pragma omp simd
       for (int q = 0; q < n; ++q)
-        upper_end[q] += upper_sign * values[q];
+        lower_end[q] += values[q];
     }
 
     /** Sum of x^2 V v over the intact bonds of every slot. */
@@ -316,10 +318,10 @@ namespace PeriArlequin
                      *values_j = values + (dim + 1) * chunk_length;
 #pragma omp simd
         for (int q = 0; q < n; ++q)
-          deviatoric_i[q] += values_i[q];
+          deviatoric_j[q] += values_j[q];
 #pragma omp simd
         for (int q = 0; q < n; ++q)
-          deviatoric_j[q] += values_j[q];
+          deviatoric_i[q] += values_i[q];
       });
     }
 
