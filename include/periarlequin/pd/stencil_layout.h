@@ -34,9 +34,12 @@ namespace PeriArlequin
    * the description of the bonds; this is a view of them, refreshed by update_mask() after
    * their states change.
    *
-   * Every rank visits the runs in the order of their global lattice line and the offsets in
-   * the stencil's order, and a particle gets the contribution of each bond in that order, so
-   * a particle's sums do not depend on the partition (bonds without an owned end add zero).
+   * The passes visit the slabs of even index, then those of odd index (see slabs); in a slab
+   * the runs in the order of their lattice lines, per run the offsets in the stencil's order
+   * and per offset the slots in order, a slot's term as the upper end of a bond before its
+   * term as the lower end. A particle thus gets the term of each bond in an order fixed by
+   * the lattice alone: its sums do not depend on the partition or on the number of threads
+   * (bonds without an owned end add zero).
    */
   template <int dim>
   class StencilLayout
