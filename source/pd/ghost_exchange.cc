@@ -70,7 +70,6 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < particle_ids.size(); ++i)
       index_of_id[particle_ids[i]] = i;
     partitioners.clear();
-    partitioner(1);
   }
 
   template <int dim>
@@ -127,13 +126,6 @@ namespace PeriArlequin
   {
     const auto found = index_of_id.find(id);
     return found == index_of_id.end() ? numbers::invalid_unsigned_int : found->second;
-  }
-
-  template <int dim>
-  unsigned int
-  GhostExchange<dim>::n_sent_particles() const
-  {
-    return partitioners.at(1)->n_import_indices();
   }
 
   template <int dim>

@@ -64,19 +64,8 @@ namespace PeriArlequin
     void
     update_ghosts(ArrayView<Tensor<1, dim>> values);
 
-    /**
-     * How many (particle, rank) pairs this rank sends per value: an update of n values a
-     * particle sends 8 n times this many bytes.
-     */
-    unsigned int
-    n_sent_particles() const;
-
-
   private:
-    /**
-     * The pattern for @p n_per_particle values a particle (built, collectively, on first
-     * use; the one for a single value by reinit()).
-     */
+    /** The pattern for @p n_per_particle values a particle (built, collectively, on first use). */
     const Utilities::MPI::Partitioner &
     partitioner(const unsigned int n_per_particle);
 
