@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # FE zone throughput in DoF-steps per second (DoFs x steps / wall time of the time loop),
-# 2D and 3D, 1 and 2 MPI ranks, sizes up to about 1e6 DoFs. Prints the median of REPEATS
-# runs per configuration and the parallel efficiency T1 / (2 T2) measured in the same run.
+# 2D and 3D, sizes up to about 1e6 DoFs, on 1 rank x 1 thread, 1 rank x 2 threads and
+# 2 ranks x 1 thread. The three run alternately, REPEATS times; prints the median of each and
+# the medians of the per-repeat ratios to 1 x 1.
 #
 #   benchmarks/fe_throughput.sh [build-dir]      (REPEATS=3 STEPS=200 by default)
 set -euo pipefail
@@ -37,23 +38,27 @@ PRM
 }
 
 
-run() { # ranks -> prints "dofs throughput" (median)
-  local ranks=$1 out dofs
-  for r in $(seq "$repeats"); do
-    out=$(launch "$ranks" "$build/periarlequin" "$work/case.prm")
-    echo "$out" | awk '/Time loop/{print $(NF-2)}'
-    dofs=$(echo "$out" | awk '/FE DoFs/{for(i=1;i<=NF;i++) if($i=="FE") print $(i-1)}')
-    echo "$dofs" > "$work/dofs"
-  done | median
+run() { # ranks threads -> prints "DoFs DoF-steps/s" of one run
+  local out
+  out=$(DEAL_II_NUM_THREADS=$2 launch "$1" "$build/periarlequin" "$work/case.prm")
+  echo "$out" | awk '/FE DoFs/{for(i=1;i<=NF;i++) if($i=="FE") d=$(i-1)}
+                     /Time loop/{t=$(NF-2)} END{print d, t}'
 }
 
-printf "%-4s %-14s %10s %16s %16s %11s\n" dim cells DoFs "1 rank DoF.s/s" "2 ranks DoF.s/s" efficiency
+printf "%-4s %-10s %8s %15s %15s %15s %9s %9s\n" dim cells DoFs "1x1 DoF.s/s" "1x2 DoF.s/s" \
+  "2x1 DoF.s/s" "1x2/1x1" "2x1/1x1"
 for config in "2 70,70 1,1" "2 220,220 1,1" "2 700,700 1,1" \
               "3 15,15,15 1,1,1" "3 32,32,32 1,1,1" "3 68,68,68 1,1,1"; do
   set -- $config
   write_prm "$1" "$2" "$3"
-  t1=$(run 1); dofs=$(cat "$work/dofs")
-  t2=$(run 2)
-  printf "%-4s %-14s %10s %16.3e %16.3e %10.0f%%\n" "$1" "$2" "$dofs" "$t1" "$t2" \
-    "$(awk "BEGIN{print 100*$t2/(2*$t1)}")"
+  rm -f "$work"/result.*
+  for r in $(seq "$repeats"); do
+    for v in 1x1 1x2 2x1; do run "${v%x*}" "${v#*x}" >> "$work/result.$v"; done
+  done
+  dofs=$(head -1 "$work/result.1x1" | awk '{print $1}')
+  # Ratios per repeat (the runs of one repeat were side by side), then their median.
+  ratio() { paste -d' ' "$work/result.$1" "$work/result.1x1" | awk '{print $2 / $4}' | median; }
+  printf "%-4s %-10s %8s %15.3e %15.3e %15.3e %9.2f %9.2f\n" "$1" "$2" "$dofs" \
+    "$(awk '{print $2}' "$work/result.1x1" | median)" "$(awk '{print $2}' "$work/result.1x2" | median)" \
+    "$(awk '{print $2}' "$work/result.2x1" | median)" "$(ratio 1x2)" "$(ratio 2x1)"
 done

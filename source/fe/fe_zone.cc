@@ -70,7 +70,6 @@ namespace PeriArlequin
               owned_dof_component[locally_owned_dofs.index_within_set(dof_indices[i])] =
                 cell->get_fe().system_to_component_index(i).first;
         }
-    reinit_matrix(stiffness_matrix);
     initialize_vector(mass);
     assemble_mass_and_stiffness();
   }
@@ -234,6 +233,8 @@ namespace PeriArlequin
     std::vector<double>                  divergence;
     AffineConstraints<double>            no_constraints;
     no_constraints.close();
+    TrilinosWrappers::SparseMatrix stiffness;
+    reinit_matrix(stiffness);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -274,11 +275,12 @@ namespace PeriArlequin
         no_constraints.distribute_local_to_global(cell_matrix,
                                                   cell_mass,
                                                   dof_indices,
-                                                  stiffness_matrix,
+                                                  stiffness,
                                                   mass);
       }
-    stiffness_matrix.compress(VectorOperation::add);
+    stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
+    stiffness_matrix.reinit(stiffness, *mass.get_partitioner());
 
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       AssertThrow(mass.local_element(i) > 0,

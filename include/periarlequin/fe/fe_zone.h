@@ -15,6 +15,7 @@
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/fe/contact.h>
+#include <periarlequin/fe/owned_rows_matrix.h>
 #include <periarlequin/time/integrated_zone.h>
 
 #include <functional>
@@ -282,7 +283,8 @@ namespace PeriArlequin
     DoFHandler<dim>                                  dof_handler;
     IndexSet                                         locally_owned_dofs;
     IndexSet                                         locally_relevant_dofs;
-    TrilinosWrappers::SparseMatrix                   stiffness_matrix;
+    /** K_alpha, its owned rows (the products run on threads). */
+    OwnedRowsMatrix                                  stiffness_matrix;
     VectorType                                       mass;
     /** The vector component of each owned DoF, in local order. */
     std::vector<unsigned char>                       owned_dof_component;
