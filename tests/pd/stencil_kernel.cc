@@ -5,7 +5,8 @@
 // stencil box, ghosts (the 2-rank run), blending weights in the overlap of a coupled case
 // (energy and force blending), and bonds that break during a run (the mask refreshed).
 //  - Static: force and energy densities of every owned particle under a random displacement
-//    of strain 1e-2, in 2D plane stress, plane strain and 3D. Tolerance 1e-12 relative to
+//    of strain 1e-2, in 2D plane stress, plane strain and 3D, at the default horizon
+//    (m = 3.015) and at m = 1.5, 4.5 (2D) and 2, 4 (3D). Tolerance 1e-12 relative to
 //    the largest density: both kernels sum the same bond terms (computed by the same
 //    formula) in a different order, round-off of a few 1e-16 of the largest term per sum
 //    (measured 3e-16 to 1.1e-15).
@@ -96,6 +97,22 @@ namespace
                 1e-12);
   }
 
+  std::string
+  number(const double value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+  /** Horizon factor @p m with @p subdivisions background cells (wide enough for it). */
+  std::string
+  horizon(const double m, const std::string &subdivisions)
+  {
+    return "subsection Geometry\n  set Subdivisions = " + subdivisions +
+           "\nend\nsubsection Peridynamics\n  set Horizon factor = " + number(m) + "\nend\n";
+  }
+
   /** The 2D cracked block with a notch and a hole: more surface than bulk near them. */
   std::string
   notched_block(const std::string &model)
@@ -124,6 +141,14 @@ main(int argc, char **argv)
                            "0.004 ; 0, 0, 0.004 : 0.01, 0.004, 0.007 ; 0, 0.007, 0.004 : "
                            "0.01, 0.01, 0.007 ; 0, 0.004, 0.004 : 0.004, 0.007, 0.007 ; 0, 0, "
                            "0.007 : 0.01, 0.01, 0.01\nend\n");
+    // Other horizons: the blocks of the kernel change with the stencil's reach (offsets
+    // fewer than 8 slots apart are summed in chunks, the others directly).
+    for (const double m : {1.5, 4.5})
+      compare_densities<2>("2D plane stress, notched block with a hole, m = " + number(m),
+                           notched_block("") + horizon(m, "4, 4"));
+    for (const double m : {2., 4.})
+      compare_densities<3>("3D cracked block, m = " + number(m),
+                           cracked_random_block<3>() + horizon(m, "2, 2, 2"));
     for (const std::string blending : {"energy", "force"})
       compare_densities<2>("coupled ring, " + blending + " blending",
                            ring_case(0.04,
