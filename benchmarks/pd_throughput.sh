@@ -99,7 +99,6 @@ run_lammps() { # ranks n steps
          printf "%s %s %s %s\n", bonds*steps/t, atoms*steps/t, rss, atoms}'
 }
 
-median_of() { sort -g | awk '{a[NR]=$1} END{print a[int((NR+1)/2)]}'; }
 
 printf "%-32s %-4s %10s %14s %14s\n" code dim particles "bond-upd/s" "particle-st/s"
 declare -A rss_ours rss_lammps n_parts
@@ -128,15 +127,15 @@ for config in "${configs[@]}"; do
     done
   done
   for v in $names; do
-    b=$(awk '{print $1}' "$work/result.$v" | median_of)
-    p=$(awk '{print $2}' "$work/result.$v" | median_of)
+    b=$(awk '{print $1}' "$work/result.$v" | median)
+    p=$(awk '{print $2}' "$work/result.$v" | median)
     parts=$(head -1 "$work/result.$v" | awk '{print $4}')
     label=$(echo "$v" | sed -e 's/^stencil-\(.\)x\(.\)/ours stencil, \1 rank x \2 thread/' \
       -e 's/^list-1x1/ours bond list, 1 rank x 1 thread/' -e 's/^lammps-\(.\)/LAMMPS \1 rank/')
     printf "%-32s %-4s %10s %14.3e %14.3e\n" "$label" "${dim}D" "$parts" "$b" "$p"
   done
   # Ratios per repeat (the runs of one repeat were side by side), then their median.
-  ratio() { paste -d' ' "$work/result.$1" "$work/result.$2" | awk -v c="$3" '{print $c / $(c + 4)}' | median_of; }
+  ratio() { paste -d' ' "$work/result.$1" "$work/result.$2" | awk -v c="$3" '{print $c / $(c + 4)}' | median; }
   printf "  ratios: stencil/bond list %.2f, 2 threads/1 %.2f, 2 ranks/1 %.2f" \
     "$(ratio stencil-1x1 list-1x1 1)" "$(ratio stencil-1x2 stencil-1x1 1)" "$(ratio stencil-2x1 stencil-1x1 1)"
   if [ "$dim" = 3 ] && $have_lammps; then
@@ -144,9 +143,9 @@ for config in "${configs[@]}"; do
   fi
   echo
   if [ "$dim" = 3 ]; then
-    rss_ours[$n]=$(awk '{print $3}' "$work/result.stencil-1x1" | median_of)
+    rss_ours[$n]=$(awk '{print $3}' "$work/result.stencil-1x1" | median)
     n_parts[$n]=$(head -1 "$work/result.stencil-1x1" | awk '{print $4}')
-    if $have_lammps; then rss_lammps[$n]=$(awk '{print $3}' "$work/result.lammps-1" | median_of); fi
+    if $have_lammps; then rss_lammps[$n]=$(awk '{print $3}' "$work/result.lammps-1" | median); fi
   fi
 done
 echo

@@ -14,7 +14,6 @@ build=$(cd "${1:-$top/build}" && pwd)
 repeats=${REPEATS:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-source "$top/benchmarks/common.sh"
 
 c++ -std=c++17 -O2 -fopenmp-simd -fno-math-errno -fno-trapping-math -ffp-contract=off \
   -o "$work/roofline" "$top/benchmarks/roofline.cc"

@@ -11,27 +11,37 @@ namespace PeriArlequin
   OwnedRowsMatrix::reinit(const TrilinosWrappers::SparseMatrix &matrix,
                           const Utilities::MPI::Partitioner    &partitioner)
   {
-    const IndexSet &owned = partitioner.locally_owned_range();
+    // Epetra's own row storage, in the order its product sums (deal.II's row iterators took
+    // minutes here for 1e6 DoFs).
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    AssertThrow(static_cast<std::size_t>(epetra.NumMyRows()) == partitioner.locally_owned_size(),
+                ExcDimensionMismatch(epetra.NumMyRows(), partitioner.locally_owned_size()));
     row_begin.assign(1, 0);
-    row_begin.reserve(owned.n_elements() + 1);
-    column.clear();
-    value.clear();
-    column.reserve(matrix.trilinos_matrix().NumMyNonzeros());
-    value.reserve(matrix.trilinos_matrix().NumMyNonzeros());
-    for (const types::global_dof_index row : owned)
+    row_begin.reserve(epetra.NumMyRows() + 1);
+    column.resize(epetra.NumMyNonzeros());
+    value.resize(epetra.NumMyNonzeros());
+    for (int row = 0; row < epetra.NumMyRows(); ++row)
       {
-        for (auto entry = matrix.begin(row); entry != matrix.end(row); ++entry)
+        AssertThrow(partitioner.global_to_local(epetra.GRID64(row)) ==
+                      static_cast<unsigned int>(row),
+                    ExcMessage("OwnedRowsMatrix: the matrix's rows are not in the order of the "
+                               "vectors' owned entries."));
+        int     n_entries;
+        double *row_values;
+        int    *row_columns;
+        epetra.ExtractMyRowView(row, n_entries, row_values, row_columns);
+        for (int k = 0; k < n_entries; ++k)
           {
-            const types::global_dof_index col = entry->column();
+            const auto col = static_cast<types::global_dof_index>(epetra.GCID64(row_columns[k]));
             AssertThrow(partitioner.in_local_range(col) || partitioner.is_ghost_entry(col),
                         ExcMessage("OwnedRowsMatrix: column " + std::to_string(col) +
-                                   " of row " + std::to_string(row) +
+                                   " of row " + std::to_string(epetra.GRID64(row)) +
                                    " is neither an owned nor a ghost entry of the vectors' "
                                    "partition."));
-            column.push_back(partitioner.global_to_local(col));
-            value.push_back(entry->value());
+            column[row_begin.back() + k] = partitioner.global_to_local(col);
+            value[row_begin.back() + k]  = row_values[k];
           }
-        row_begin.push_back(column.size());
+        row_begin.push_back(row_begin.back() + n_entries);
       }
   }
 
