@@ -97,20 +97,13 @@ namespace
                 1e-12);
   }
 
-  std::string
-  number(const double value)
-  {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-  }
-
   /** Horizon factor @p m with @p subdivisions background cells (wide enough for it). */
   std::string
   horizon(const double m, const std::string &subdivisions)
   {
     return "subsection Geometry\n  set Subdivisions = " + subdivisions +
-           "\nend\nsubsection Peridynamics\n  set Horizon factor = " + number(m) + "\nend\n";
+           "\nend\nsubsection Peridynamics\n  set Horizon factor = " + Utilities::to_string(m) +
+           "\nend\n";
   }
 
   /** The 2D cracked block with a notch and a hole: more surface than bulk near them. */
@@ -144,10 +137,11 @@ main(int argc, char **argv)
     // Other horizons: the blocks of the kernel change with the stencil's reach (offsets
     // fewer than 8 slots apart are summed in chunks, the others directly).
     for (const double m : {1.5, 4.5})
-      compare_densities<2>("2D plane stress, notched block with a hole, m = " + number(m),
+      compare_densities<2>("2D plane stress, notched block with a hole, m = " +
+                             Utilities::to_string(m),
                            notched_block("") + horizon(m, "4, 4"));
     for (const double m : {2., 4.})
-      compare_densities<3>("3D cracked block, m = " + number(m),
+      compare_densities<3>("3D cracked block, m = " + Utilities::to_string(m),
                            cracked_random_block<3>() + horizon(m, "2, 2, 2"));
     for (const std::string blending : {"energy", "force"})
       compare_densities<2>("coupled ring, " + blending + " blending",
