@@ -49,40 +49,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  BondFamilies<dim>::begin_family()
-  {
-    family_begin.push_back(family_begin.back());
-  }
-
-  template <int dim>
-  void
-  BondFamilies<dim>::add_bond(const unsigned int neighbor_index,
-                              const unsigned int stencil_entry,
-                              const BondState    bond_state)
-  {
-    neighbor.push_back(neighbor_index);
-    stencil_index.push_back(static_cast<std::uint16_t>(stencil_entry));
-    state.push_back(bond_state);
-    ++family_begin.back();
-  }
-
-  template <int dim>
-  void
-  BondFamilies<dim>::end_families(const unsigned int owned, const unsigned int total)
-  {
-    AssertThrow(family_begin.size() == owned + 1, ExcInternalError());
-    n_owned = owned;
-    n_total = total;
-  }
-
-  template <int dim>
   std::size_t
   BondFamilies<dim>::n_bond_ends() const
   {
     std::size_t ends = 0;
-    for (std::size_t n = 0; n < neighbor.size(); ++n)
-      ends += neighbor_is_owned(n) ? 2 : 1;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        ends += neighbor_is_owned(i, n) ? 2 : 1;
     return ends;
   }
 
@@ -91,9 +64,10 @@ namespace PeriArlequin
   BondFamilies<dim>::n_broken_bond_ends() const
   {
     std::size_t ends = 0;
-    for (std::size_t n = 0; n < neighbor.size(); ++n)
-      if (state[n] == broken)
-        ends += neighbor_is_owned(n) ? 2 : 1;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        if (state[n] == broken)
+          ends += neighbor_is_owned(i, n) ? 2 : 1;
     return ends;
   }
 
@@ -109,10 +83,11 @@ namespace PeriArlequin
           const double intact_v  = state[n] != broken ? v : 0.;
           all[i] += v;
           kept[i] += intact_v;
-          if (neighbor_is_owned(n))
+          const unsigned int j = neighbor(i, n);
+          if (j < n_owned)
             {
-              all[neighbor[n]] += v;
-              kept[neighbor[n]] += intact_v;
+              all[j] += v;
+              kept[j] += intact_v;
             }
         }
     for (unsigned int i = 0; i < n_owned; ++i)
@@ -142,69 +117,95 @@ namespace PeriArlequin
                            const Kernel                                  kernel)
   {
     const unsigned int owned = ghosts.n_owned();
-    const auto         x       = ghosts.reference_positions();
-    const auto         ids     = ghosts.ids();
-    family_begin.assign(1, 0);
-    neighbor.clear();
-    stencil_index.clear();
-    state.clear();
-    weighted_volume.assign(ghosts.n_total(), 0.);
+    const auto         x     = ghosts.reference_positions();
+    const auto         ids   = ghosts.ids();
+    n_owned                  = owned;
+    n_total                  = ghosts.n_total();
 
-    for (unsigned int i = 0; i < owned; ++i)
-      {
-        const auto site = lattice.site(ids[i]);
-        begin_family();
-        for (unsigned int k = 0; k < stencil.size(); ++k)
-          {
-            const auto other = lattice.neighbour(site, stencil[k].offset);
-            if (!other)
-              continue;
-            const unsigned int j = ghosts.local_index(lattice.id(*other));
-            if (j == numbers::invalid_unsigned_int)
-              {
-                AssertThrow(!extent(lattice.position(*other)),
-                            ExcMessage("Invalid input: a neighbour within the horizon of the "
-                                       "particle at " + point_text(x[i]) +
-                                       " m is neither owned nor a ghost particle: one layer "
-                                       "of ghost cells does not cover the bonds there "
-                                       "(Peridynamics/Horizon factor and Lattice spacing); "
-                                       "allowed: background cells at least delta + dx/2 wide "
-                                       "wherever particles are, also around them."));
-                continue;
-              }
-            // The full family gives the weighted volume; a bond between two owned particles
-            // is stored only at the lower local index.
-            weighted_volume[i] +=
-              stencil[k].length * stencil[k].length * stencil[k].volume;
-            if (j < owned && j < i)
-              continue;
-            // Test the crack with the ends in the order of their global ids, so that the
-            // ranks holding the two ends decide alike even for a bond grazing a crack tip.
-            const bool        i_first = ids[i] < ids[j];
-            const Point<dim> &first   = x[i_first ? i : j];
-            const Point<dim> &second  = x[i_first ? j : i];
-            auto              bond_state = BondFamilies<dim>::intact;
-            for (const auto &crack : pre_cracks)
-              if (crack.cuts(first, second))
-                bond_state = BondFamilies<dim>::broken;
-            if (bond_state != BondFamilies<dim>::broken && (no_fail(x[i]) || no_fail(x[j])))
-              bond_state = BondFamilies<dim>::unbreakable;
-            add_bond(j, k, bond_state);
-          }
-      }
-    end_families(owned, ghosts.n_total());
-    ghosts.update_ghosts(make_array_view(weighted_volume), 1);
-
+    // The layout first: under the stencil a bond needs no neighbour index of its own.
     layout         = StencilLayout<dim>();
     stencil_active = false;
     if (kernel != Kernel::bond_list)
       {
-        layout.build(lattice, ids, *this);
+        layout.place(lattice, ids, *this);
         stencil_active =
           kernel == Kernel::stencil || layout.fill_ratio() <= max_stencil_fill_ratio;
         if (!stencil_active)
           layout = StencilLayout<dim>();
       }
+
+    // visit_family(i, held) calls held(j, k) for every held neighbour j (stencil entry k) of
+    // owned particle i, in the stencil's order. A bond between two owned particles is stored
+    // at the lower local index only. Twice: to count the stored bonds, so that the arrays are
+    // allocated once at their size, then to fill them.
+    const auto stored_at = [owned](const unsigned int i, const unsigned int j) {
+      return j >= owned || j > i;
+    };
+    const auto visit_family = [&](const unsigned int i, const auto &held) {
+      const auto site = lattice.site(ids[i]);
+      for (unsigned int k = 0; k < stencil.size(); ++k)
+        {
+          const auto other = lattice.neighbour(site, stencil[k].offset);
+          if (!other)
+            continue;
+          const unsigned int j = ghosts.local_index(lattice.id(*other));
+          if (j == numbers::invalid_unsigned_int)
+            {
+              AssertThrow(!extent(lattice.position(*other)),
+                          ExcMessage("Invalid input: a neighbour within the horizon of the "
+                                     "particle at " + point_text(x[i]) +
+                                     " m is neither owned nor a ghost particle: one layer "
+                                     "of ghost cells does not cover the bonds there "
+                                     "(Peridynamics/Horizon factor and Lattice spacing); "
+                                     "allowed: background cells at least delta + dx/2 wide "
+                                     "wherever particles are, also around them."));
+              continue;
+            }
+          held(j, k);
+        }
+    };
+    family_begin.assign(owned + 1, 0);
+    for (unsigned int i = 0; i < owned; ++i)
+      {
+        family_begin[i + 1] = family_begin[i];
+        visit_family(i, [&](const unsigned int j, unsigned int) {
+          family_begin[i + 1] += stored_at(i, j);
+        });
+      }
+    const std::size_t n_stored = family_begin[owned];
+    stencil_index.assign(n_stored, 0);
+    state.assign(n_stored, intact);
+    neighbor_index.assign(stencil_active ? 0 : n_stored, 0);
+    weighted_volume.assign(n_total, 0.);
+
+    for (unsigned int i = 0; i < owned; ++i)
+      {
+        std::size_t n = family_begin[i];
+        visit_family(i, [&](const unsigned int j, const unsigned int k) {
+          // The full family gives the weighted volume.
+          weighted_volume[i] += stencil[k].length * stencil[k].length * stencil[k].volume;
+          if (!stored_at(i, j))
+            return;
+          // Test the crack with the ends in the order of their global ids, so that the
+          // ranks holding the two ends decide alike even for a bond grazing a crack tip.
+          const bool        i_first = ids[i] < ids[j];
+          const Point<dim> &first   = x[i_first ? i : j];
+          const Point<dim> &second  = x[i_first ? j : i];
+          for (const auto &crack : pre_cracks)
+            if (crack.cuts(first, second))
+              state[n] = broken;
+          if (state[n] != broken && (no_fail(x[i]) || no_fail(x[j])))
+            state[n] = unbreakable;
+          stencil_index[n] = static_cast<std::uint16_t>(k);
+          Assert(!stencil_active || layout.neighbor(i, k) == j, ExcInternalError());
+          if (!stencil_active)
+            neighbor_index[n] = j;
+          ++n;
+        });
+      }
+    ghosts.update_ghosts(make_array_view(weighted_volume), 1);
+    if (stencil_active)
+      layout.update_mask(*this);
   }
 
   template <int dim>
@@ -223,7 +224,7 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
         if (state[n] == broken)
-          broken_pairs.emplace(std::minmax(ids[i], ids[neighbor[n]]));
+          broken_pairs.emplace(std::minmax(ids[i], ids[neighbor(i, n)]));
     return broken_pairs;
   }
 
@@ -246,7 +247,7 @@ namespace PeriArlequin
             continue;
           const unsigned int i = found->second;
           for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-            if (ids[neighbor[n]] == other)
+            if (ids[neighbor(i, n)] == other)
               state[n] = broken;
         }
     states_changed();

@@ -44,7 +44,7 @@ namespace PeriArlequin
             continue;
           const auto  &bond = bonds.stencil[bonds.stencil_index[n]];
           const double e =
-            BondFamilies<dim>::extension(bond, u[bonds.neighbor[n]] - u[i]).first;
+            BondFamilies<dim>::extension(bond, u[bonds.neighbor(i, n)] - u[i]).first;
           if (e > stretch * bond.length)
             {
               bonds.state[n] = BondFamilies<dim>::broken;
@@ -97,7 +97,7 @@ namespace PeriArlequin
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         if (bonds.state[n] == BondFamilies<dim>::intact && pair_energy[n] >= critical_energy_ &&
             BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
-                                         u[bonds.neighbor[n]] - u[i])
+                                         u[bonds.neighbor(i, n)] - u[i])
                 .first > 0)
           {
             bonds.state[n] = BondFamilies<dim>::broken;

@@ -86,7 +86,7 @@ namespace PeriArlequin
         {
           if (bonds.state[n] == BondFamilies<dim>::broken)
             continue;
-          const unsigned int j    = bonds.neighbor[n];
+          const unsigned int j    = bonds.neighbor(i, n);
           const auto        &bond = bonds.stencil[bonds.stencil_index[n]];
           const double       e    = BondFamilies<dim>::extension(bond, u[j] - u[i]).first;
           const double       extension_moment = bond.length * e * bond.volume;
@@ -152,12 +152,12 @@ namespace PeriArlequin
                                                      std::vector<double> &pair_energy) const
   {
     compute_coefficients(bonds, scalars, {});
-    pair_energy.assign(bonds.neighbor.size(), 0.);
+    pair_energy.assign(bonds.n_bonds(), 0.);
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         if (bonds.state[n] != BondFamilies<dim>::broken)
           {
-            const unsigned int j    = bonds.neighbor[n];
+            const unsigned int j    = bonds.neighbor(i, n);
             const auto        &bond = bonds.stencil[bonds.stencil_index[n]];
             const double       e    = BondFamilies<dim>::extension(bond, u[j] - u[i]).first;
             const double       t    = (coefficients[3 * i] + coefficients[3 * j]) * e +
@@ -191,7 +191,7 @@ namespace PeriArlequin
           {
             if (bonds.state[n] == BondFamilies<dim>::broken)
               continue;
-            const unsigned int   j      = bonds.neighbor[n];
+            const unsigned int   j      = bonds.neighbor(i, n);
             const double *const  cj     = &coefficients[3 * j];
             const auto          &bond   = bonds.stencil[bonds.stencil_index[n]];
             const Tensor<1, dim> eta    = u[j] - u[i];

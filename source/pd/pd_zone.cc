@@ -474,7 +474,7 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
-          const unsigned int j = bonds.neighbor[n];
+          const unsigned int j = bonds.neighbor(i, n);
           any_weighted         = any_weighted || alpha[i] > 0;
           if (alpha[i] == 0 && alpha[j] > 0)
             near[i] = 1;
@@ -507,7 +507,7 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
-          const unsigned int j = bonds.neighbor[n];
+          const unsigned int j = bonds.neighbor(i, n);
           if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
             bonds_near_overlap.emplace_back(near[i] > 0 ? i : j, n);
         }
@@ -739,7 +739,7 @@ namespace PeriArlequin
                                         {}};
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           if (bonds.state[n] == BondFamilies<dim>::broken)
-            record.broken_partners.push_back(ids[bonds.neighbor[n]]);
+            record.broken_partners.push_back(ids[bonds.neighbor(i, n)]);
         records.push_back(std::move(record));
       }
     return Utilities::pack(records, false);

@@ -17,7 +17,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  StencilLayout<dim>::build(const Lattice<dim>                     &lattice,
+  StencilLayout<dim>::place(const Lattice<dim>                     &lattice,
                             ArrayView<const types::particle_index> ids,
                             const BondFamilies<dim>                &bonds)
   {
@@ -51,11 +51,13 @@ namespace PeriArlequin
       }
 
     slot.resize(n_held);
+    local_of_slot.assign(n_box_slots, numbers::invalid_unsigned_int);
     for (unsigned int i = 0; i < n_held; ++i)
       {
         slot[i] = 0;
         for (unsigned int d = 0; d < dim; ++d)
           slot[i] += static_cast<std::size_t>(sites[i][d] - lower[d]) * stride[d];
+        local_of_slot[slot[i]] = i;
       }
 
     // Runs: the held slots of each lattice line, in the order of the lines.
@@ -74,24 +76,23 @@ namespace PeriArlequin
     half_offsets.clear();
     half_of_entry.assign(bonds.stencil.size(), 0);
     entry_is_half.assign(bonds.stencil.size(), false);
-    std::unordered_map<long, unsigned int> half_of_shift;
-    const auto shift = [&](const std::array<int, dim> &offset) {
-      long s = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-        s += offset[d] * static_cast<long>(stride[d]);
-      return s;
-    };
+    entry_shift.assign(bonds.stencil.size(), 0);
+    std::unordered_map<std::ptrdiff_t, unsigned int> half_of_shift;
     for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
-      if (shift(bonds.stencil[k].offset) > 0)
-        {
-          half_of_shift[shift(bonds.stencil[k].offset)] = half_offsets.size();
-          half_of_entry[k]                             = half_offsets.size();
-          entry_is_half[k]                             = true;
-          half_offsets.push_back({static_cast<std::size_t>(shift(bonds.stencil[k].offset)), k});
-        }
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          entry_shift[k] += bonds.stencil[k].offset[d] * static_cast<std::ptrdiff_t>(stride[d]);
+        if (entry_shift[k] > 0)
+          {
+            half_of_shift[entry_shift[k]] = half_offsets.size();
+            half_of_entry[k]              = half_offsets.size();
+            entry_is_half[k]              = true;
+            half_offsets.push_back({static_cast<std::size_t>(entry_shift[k]), k});
+          }
+      }
     for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
       if (!entry_is_half[k])
-        half_of_entry[k] = half_of_shift.at(-shift(bonds.stencil[k].offset));
+        half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
 
     runs.clear();
     max_run_length = 0;
@@ -105,8 +106,8 @@ namespace PeriArlequin
           mask_size += half_offsets.size() * length;
           max_run_length = std::max(max_run_length, length);
         }
-    mask.resize(mask_size);
-    update_mask(bonds);
+    mask.assign(mask_size, 0);
+    block_active.assign(runs.size() * half_offsets.size(), 0);
 
     // Slabs of the outermost coordinate, counted from the lattice's origin.
     const unsigned int thickness = std::max(reach, 1);
@@ -136,7 +137,7 @@ namespace PeriArlequin
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
           const unsigned int k = bonds.stencil_index[n];
-          const std::size_t  s = entry_is_half[k] ? slot[i] : slot[bonds.neighbor[n]];
+          const std::size_t  s = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
           const Run         &run = runs[run_of_line[s / line_length]];
           mask[run.mask_begin + half_of_entry[k] * std::size_t(run.length) + (s - run.begin)] =
             bonds.state[n] != BondFamilies<dim>::broken;

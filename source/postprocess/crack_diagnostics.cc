@@ -386,12 +386,13 @@ namespace PeriArlequin
 
     // A bond to a ghost is stored on both ranks that own one of its ends: half on each.
     double broken = 0;
-    for (std::size_t n = 0; n < bonds.neighbor.size(); ++n)
-      if (bonds.state[n] == BondFamilies<dim>::broken)
-        {
-          const auto &entry = bonds.stencil[bonds.stencil_index[n]];
-          broken += (bonds.neighbor_is_owned(n) ? 1. : 0.5) * entry.length * entry.volume;
-        }
+    for (unsigned int i = 0; i < bonds.n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (bonds.state[n] == BondFamilies<dim>::broken)
+          {
+            const auto &entry = bonds.stencil[bonds.stencil_index[n]];
+            broken += (bonds.neighbor_is_owned(i, n) ? 1. : 0.5) * entry.length * entry.volume;
+          }
     return Utilities::MPI::sum(broken, communicator) / per_unit_area;
   }
 

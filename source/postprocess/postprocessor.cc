@@ -85,7 +85,7 @@ namespace PeriArlequin
             {
               if (bonds.state[n] == BondFamilies<dim>::broken)
                 continue;
-              const unsigned int j     = bonds.neighbor[n];
+              const unsigned int j     = bonds.neighbor(i, n);
               const auto        &entry = bonds.stencil[bonds.stencil_index[n]];
               const double       stretch =
                 BondFamilies<dim>::extension(entry, u[j] - u[i]).first / entry.length;

@@ -31,7 +31,7 @@ namespace
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         n_broken += bonds.state[n] == BondFamilies<2>::broken &&
-                    (alpha[i] > 0 || alpha[bonds.neighbor[n]] > 0);
+                    (alpha[i] > 0 || alpha[bonds.neighbor(i, n)] > 0);
     return Utilities::MPI::sum(n_broken, MPI_COMM_WORLD);
   }
 } // namespace

@@ -52,7 +52,7 @@ namespace
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
-          const unsigned int j = bonds.neighbor[n];
+          const unsigned int j = bonds.neighbor(i, n);
           if (bonds.state[n] == BondFamilies<2>::broken || !in_band(x[i], half_strip) ||
               !in_band(x[j], half_strip))
             continue;

@@ -44,7 +44,7 @@ namespace UserCriteria
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           if (bonds.state[n] == BondFamilies<dim>::intact &&
               BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
-                                           u[bonds.neighbor[n]] - u[i])
+                                           u[bonds.neighbor(i, n)] - u[i])
                   .first > critical_extension)
             {
               bonds.state[n] = BondFamilies<dim>::broken;

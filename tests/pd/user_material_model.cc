@@ -84,7 +84,7 @@ namespace UserModels
           {
             if (bonds.state[n] == BondFamilies<dim>::broken)
               continue;
-            const unsigned int   j    = bonds.neighbor[n];
+            const unsigned int   j    = bonds.neighbor(i, n);
             const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
             const Tensor<1, dim> y    = bond.xi + u[j] - u[i];
             const double         s    = (y.norm() - bond.length) / bond.length;
@@ -94,7 +94,7 @@ namespace UserModels
             const double energy = 0.25 * micromodulus * s * s * bond.length * bond.volume;
             force_density[i] += pair;
             energy_density[i] += state_weight[i] * energy;
-            if (bonds.neighbor_is_owned(n))
+            if (bonds.neighbor_is_owned(i, n))
               {
                 force_density[j] -= pair;
                 energy_density[j] += state_weight[j] * energy;

@@ -29,10 +29,12 @@ namespace PeriArlequin
    * full. The two ranks holding a bond to a ghost compute it identically, so a bond breaks in
    * the same step on both.
    *
-   * On a lattice every bond is a lattice offset, so a bond stores only its neighbour and the
-   * index of its offset in a shared stencil that holds the reference bond vector xi (from
-   * the list owner to the neighbour), its length and the partial volume V v of eq. 22
-   * (the same from both ends on a uniform lattice). Seven bytes a bond.
+   * On a lattice every bond is a lattice offset, so a bond stores only the index of its
+   * offset in a shared stencil that holds the reference bond vector xi (from the list owner
+   * to the neighbour), its length and the partial volume V v of eq. 22 (the same from both
+   * ends on a uniform lattice), its state, and, unless the stencil layout is in use (it
+   * finds the neighbour from the offset), its neighbour's local index: three bytes a bond
+   * under the stencil, seven with the bond lists. neighbor(i, n) gives the neighbour either way.
    */
   template <int dim>
   class BondFamilies
@@ -120,8 +122,8 @@ namespace PeriArlequin
     unsigned int n_total = 0;
 
     std::vector<StencilEntry>  stencil;
+    /** The stored bonds of owned particle i are n in [family_begin[i], family_begin[i + 1]). */
     std::vector<unsigned int>  family_begin;
-    std::vector<unsigned int>  neighbor;
     std::vector<std::uint16_t> stencil_index;
     std::vector<std::uint8_t>  state;
     /** Reference weighted volume q = sum x^2 V_J v_IJ over the full family, owned and ghosts. */
@@ -141,11 +143,25 @@ namespace PeriArlequin
       return {(2. * (bond.xi * eta) + eta * eta) / (length + bond.length), length};
     }
 
-    /** Whether the neighbour of stored bond @p n is owned (and so takes its share). */
-    bool
-    neighbor_is_owned(const std::size_t n) const
+    /** Bonds stored here. */
+    std::size_t
+    n_bonds() const
     {
-      return neighbor[n] < n_owned;
+      return stencil_index.size();
+    }
+
+    /** The local index (owned or ghost) of the neighbour of stored bond @p n of owned particle @p i. */
+    unsigned int
+    neighbor(const unsigned int i, const std::size_t n) const
+    {
+      return stencil_active ? layout.neighbor(i, stencil_index[n]) : neighbor_index[n];
+    }
+
+    /** Whether the neighbour of stored bond @p n of owned particle @p i is owned (and so takes its share). */
+    bool
+    neighbor_is_owned(const unsigned int i, const std::size_t n) const
+    {
+      return neighbor(i, n) < n_owned;
     }
 
     /** Bond ends at owned particles (a bond between two owned particles counts twice). */
@@ -161,15 +177,8 @@ namespace PeriArlequin
   private:
     StencilLayout<dim> layout;
     bool               stencil_active = false;
-
-    /** Start a family for the next owned particle (call in order of local index). */
-    void
-    begin_family();
-    void
-    add_bond(const unsigned int neighbor, const unsigned int stencil_index, const BondState state);
-    /** Close the CSR arrays after the last family. */
-    void
-    end_families(const unsigned int n_owned, const unsigned int n_total);
+    /** The neighbour of every stored bond, only with the bond lists (else empty). */
+    std::vector<unsigned int> neighbor_index;
   };
 } // namespace PeriArlequin
 

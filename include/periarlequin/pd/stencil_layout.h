@@ -63,17 +63,29 @@ namespace PeriArlequin
     };
 
     /**
-     * Place the held particles, ids @p ids in local order, of @p lattice in the box and fill
-     * the bond states from @p bonds (whose stencil and CSR arrays are built).
+     * Place the held particles, ids @p ids in local order, of @p lattice in the box, for the
+     * stencil of @p bonds (built; its CSR arrays need not be): the bond states are all 0
+     * until update_mask().
      */
     void
-    build(const Lattice<dim>                     &lattice,
+    place(const Lattice<dim>                     &lattice,
           ArrayView<const types::particle_index> ids,
           const BondFamilies<dim>                &bonds);
 
-    /** The bond states again, from the CSR states of @p bonds (after bonds broke). */
+    /** The bond states from the CSR states of @p bonds (after they were built or bonds broke). */
     void
     update_mask(const BondFamilies<dim> &bonds);
+
+    /**
+     * The local index of the held particle at stencil entry @p k of held particle @p i, or
+     * numbers::invalid_unsigned_int if that site is not held: the CSR arrays need no
+     * neighbour indices of their own under the stencil.
+     */
+    unsigned int
+    neighbor(const unsigned int i, const unsigned int k) const
+    {
+      return local_of_slot[slot[i] + entry_shift[k]];
+    }
 
     /** Slots in the padded box. */
     std::size_t
@@ -123,6 +135,10 @@ namespace PeriArlequin
     std::vector<unsigned int> half_of_entry;
     /** Per stencil entry: whether its own slot shift is positive (its owner is that end). */
     std::vector<bool> entry_is_half;
+    /** Per stencil entry: its slot shift. */
+    std::vector<std::ptrdiff_t> entry_shift;
+    /** The local index of the particle in every slot of the box, or invalid_unsigned_int. */
+    std::vector<unsigned int> local_of_slot;
     std::size_t                  n_box_slots = 0;
     /** The run of each lattice line of the box (by slot / stride[1]), or -1. */
     std::vector<int> run_of_line;
