@@ -4,6 +4,7 @@
 #include <periarlequin/pd/ghost_exchange.h>
 
 #include <algorithm>
+#include <iterator>
 #include <numeric>
 
 namespace PeriArlequin
@@ -22,6 +23,11 @@ namespace PeriArlequin
     particle_handler.exchange_ghost_particles(true);
     particle_ids.clear();
     positions.clear();
+    const std::size_t n_held =
+      particle_handler.n_locally_owned_particles() +
+      std::distance(particle_handler.begin_ghost(), particle_handler.end_ghost());
+    particle_ids.reserve(n_held);
+    positions.reserve(n_held);
     for (const auto &particle : particle_handler)
       {
         particle_ids.push_back(particle.get_id());
@@ -50,6 +56,7 @@ namespace PeriArlequin
       Point<dim>              position;
     };
     std::vector<Ghost> ghosts;
+    ghosts.reserve(n_held - n_owned_particles);
     for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost(); ++ghost)
       ghosts.push_back({static_cast<types::global_dof_index>(ghost->get_properties()[0]),
                         ghost->get_id(),
@@ -58,6 +65,7 @@ namespace PeriArlequin
       return a.index < b.index;
     });
     ghost_indices.clear();
+    ghost_indices.reserve(ghosts.size());
     for (const auto &ghost : ghosts)
       {
         ghost_indices.push_back(ghost.index);

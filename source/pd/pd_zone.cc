@@ -390,18 +390,27 @@ namespace PeriArlequin
   {
     if (general_cells)
       vertex_to_cells = GridTools::vertex_to_cell_map(triangulation);
+    const auto for_each_site = [&](const auto &cell, const auto &visit) {
+      const auto [lower, upper] = cell_bounds(cell);
+      lattice.for_each_site_in(lower, upper, [&](const auto &site) {
+        const Point<dim> x = lattice.position(site);
+        if (accept(x, lattice.id(site)) && owns_site(cell, x))
+          visit(site, x);
+      });
+    };
+    // The storage of the owned particles and of the ghosts to come (the particles of the
+    // ghost cells), reserved at once: grown one particle at a time, it can reach twice that.
+    std::size_t n_held = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        const auto [lower, upper] = cell_bounds(cell);
-        lattice.for_each_site_in(lower, upper, [&](const auto &site) {
-          const Point<dim> x = lattice.position(site);
-          if (accept(x, lattice.id(site)) && owns_site(cell, x))
-            particle_handler.insert_particle(
-              x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for_each_site(cell, [&](const auto &, const Point<dim> &) { ++n_held; });
+    particle_handler.reserve(n_held);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for_each_site(cell, [&](const auto &site, const Point<dim> &x) {
+          particle_handler.insert_particle(
+            x, mapping.transform_real_to_unit_cell(cell, x), lattice.id(site), cell);
         });
-      }
     particle_handler.update_cached_numbers();
     vertex_to_cells.clear();
   }
