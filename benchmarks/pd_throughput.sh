@@ -2,8 +2,9 @@
 # PD throughput in bond-updates per second (family sizes summed over particles x steps /
 # wall time of the time loop), 2D and 3D, and peak memory per particle. Per case, in the
 # same run and alternated REPEATS times (3): ours with the lattice-stencil kernel on
-# 1 rank x 1 thread, 1 rank x 2 threads and 2 ranks x 1 thread, ours with the bond-list
-# kernel on 1 rank x 1 thread; in 3D LAMMPS's peri/lps on 1 and 2 ranks when Debian's
+# 1 rank x 1 thread, 1 rank x 2 threads, 2 ranks x 1 thread and two independent 1 x 1 runs
+# at once (the machine's ceiling for two cores), ours with the bond-list kernel on
+# 1 rank x 1 thread; in 3D LAMMPS's peri/lps on 1 and 2 ranks when Debian's
 # `lammps` is installed (the same simple cubic lattice: h = 1 mm, horizon 3.015 h,
 # E = 69 GPa, nu = 0.3, rho = 2700, dt = 1e-8 s, small random velocities, no fracture, the
 # same step count).
@@ -85,6 +86,16 @@ run_ours() { # ranks threads steps prm
     END {printf "%s %s %s %s\n", b, particles*steps/t, rss, particles}'
 }
 
+# Two independent 1 x 1 runs at once, their rates summed: what the two cores give work that
+# shares nothing (no messages, no threads' synchronisation), the machine's own ceiling for
+# 2 ranks or 2 threads (shared caches, memory, the host's scheduling of the virtual cores).
+run_pair() { # steps prm
+  run_ours 1 1 "$1" "$2" > "$work/pair.a" &
+  run_ours 1 1 "$1" "$2" > "$work/pair.b"
+  wait
+  paste -d' ' "$work/pair.a" "$work/pair.b" | awk '{print $1 + $5, $2 + $6, $3, $4}'
+}
+
 # LAMMPS: the same, from its "total # of bonds" and the second "Loop time"; fails if a
 # bond broke (the printed maximum damage must stay 0)
 run_lammps() { # ranks n steps
@@ -104,7 +115,7 @@ printf "%-32s %-4s %10s %14s %14s\n" code dim particles "bond-upd/s" "particle-s
 declare -A rss_ours rss_lammps n_parts
 # "dim particles-per-edge steps" cases, ';'-separated (CONFIGS overrides).
 IFS=';' read -ra configs <<< "${CONFIGS:-3 22 40;3 46 40;3 67 20;2 100 200;2 316 100;2 1000 20}"
-variants="stencil-1x1 stencil-1x2 stencil-2x1 list-1x1"
+variants="stencil-1x1 stencil-1x2 stencil-2x1 stencil-pair list-1x1"
 for config in "${configs[@]}"; do
   set -- $config
   dim=$1 n=$2 steps=$3
@@ -119,6 +130,7 @@ for config in "${configs[@]}"; do
         stencil-1x1) line=$(run_ours 1 1 "$steps" "$work/case.stencil.prm") ;;
         stencil-1x2) line=$(run_ours 1 2 "$steps" "$work/case.stencil.prm") ;;
         stencil-2x1) line=$(run_ours 2 1 "$steps" "$work/case.stencil.prm") ;;
+        stencil-pair) line=$(run_pair "$steps" "$work/case.stencil.prm") ;;
         list-1x1)    line=$(run_ours 1 1 "$steps" "$work/case.bond_list.prm") ;;
         lammps-1)    line=$(run_lammps 1 "$n" "$steps") ;;
         lammps-2)    line=$(run_lammps 2 "$n" "$steps") ;;
@@ -131,13 +143,15 @@ for config in "${configs[@]}"; do
     p=$(awk '{print $2}' "$work/result.$v" | median)
     parts=$(head -1 "$work/result.$v" | awk '{print $4}')
     label=$(echo "$v" | sed -e 's/^stencil-\(.\)x\(.\)/ours stencil, \1 rank x \2 thread/' \
+      -e 's/^stencil-pair/ours stencil, 2 x (1 x 1) at once/' \
       -e 's/^list-1x1/ours bond list, 1 rank x 1 thread/' -e 's/^lammps-\(.\)/LAMMPS \1 rank/')
     printf "%-32s %-4s %10s %14.3e %14.3e\n" "$label" "${dim}D" "$parts" "$b" "$p"
   done
   # Ratios per repeat (the runs of one repeat were side by side), then their median.
   ratio() { paste -d' ' "$work/result.$1" "$work/result.$2" | awk -v c="$3" '{print $c / $(c + 4)}' | median; }
-  printf "  ratios: stencil/bond list %.2f, 2 threads/1 %.2f, 2 ranks/1 %.2f" \
-    "$(ratio stencil-1x1 list-1x1 1)" "$(ratio stencil-1x2 stencil-1x1 1)" "$(ratio stencil-2x1 stencil-1x1 1)"
+  printf "  ratios: stencil/bond list %.2f, 2 threads/1 %.2f, 2 ranks/1 %.2f, 2 independent runs/1 %.2f" \
+    "$(ratio stencil-1x1 list-1x1 1)" "$(ratio stencil-1x2 stencil-1x1 1)" "$(ratio stencil-2x1 stencil-1x1 1)" \
+    "$(ratio stencil-pair stencil-1x1 1)"
   if [ "$dim" = 3 ] && $have_lammps; then
     printf ", ours/LAMMPS per particle-step on 1 rank %.2f" "$(ratio stencil-1x1 lammps-1 2)"
   fi

@@ -53,8 +53,8 @@ namespace PeriArlequin
 
     /**
      * Visit the blocks of the runs @p range of @p layout chunk by chunk: @p visit(block) for
-     * each run, half offset and chunk of the run, in this order, skipping blocks without an
-     * active bond (they would add zeros).
+     * each run, half offset and chunk of the block's slots (StencilLayout::block_slots), in
+     * this order: the slots outside them would add zeros.
      */
     template <int dim, typename Visitor>
     inline __attribute__((always_inline)) void
@@ -67,7 +67,8 @@ namespace PeriArlequin
       for (unsigned int r = range.first; r < range.end; ++r)
         for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
           {
-            if (!layout.block_active[r * layout.half_offsets.size() + h])
+            const auto [begin, end] = layout.block_slots[r * layout.half_offsets.size() + h];
+            if (begin == end)
               continue;
             const auto &run  = layout.runs[r];
             const auto &half = layout.half_offsets[h];
@@ -80,10 +81,10 @@ namespace PeriArlequin
             block.direct = half.delta >= simd_distance;
             const std::uint8_t *mask =
               layout.mask.data() + run.mask_begin + h * std::size_t(run.length);
-            for (unsigned int first = 0; first < run.length; first += chunk_length)
+            for (unsigned int first = begin; first < end; first += chunk_length)
               {
                 block.first = run.begin + first;
-                block.n     = std::min(chunk_length, run.length - first);
+                block.n     = std::min(chunk_length, end - first);
                 block.mask  = mask + first;
                 visit(block);
               }

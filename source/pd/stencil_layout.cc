@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <unordered_map>
 
@@ -107,7 +108,7 @@ namespace PeriArlequin
           max_run_length = std::max(max_run_length, length);
         }
     mask.assign(mask_size, 0);
-    block_active.assign(runs.size() * half_offsets.size(), 0);
+    block_slots.assign(runs.size() * half_offsets.size(), {0, 0});
 
     // Slabs of the outermost coordinate, counted from the lattice's origin.
     const unsigned int thickness = std::max(reach, 1);
@@ -143,13 +144,21 @@ namespace PeriArlequin
             bonds.state[n] != BondFamilies<dim>::broken;
         }
     const std::size_t n_half = half_offsets.size();
-    block_active.assign(runs.size() * n_half, 0);
+    block_slots.assign(runs.size() * n_half, {0, 0});
     for (unsigned int r = 0; r < runs.size(); ++r)
       for (std::size_t h = 0; h < n_half; ++h)
         {
           const auto first = mask.begin() + runs[r].mask_begin + h * runs[r].length;
-          block_active[r * n_half + h] =
-            std::any_of(first, first + runs[r].length, [](const std::uint8_t m) { return m != 0; });
+          const auto end   = first + runs[r].length;
+          const auto intact = [](const std::uint8_t m) { return m != 0; };
+          const auto begin  = std::find_if(first, end, intact);
+          if (begin == end)
+            continue;
+          const auto last = std::find_if(std::make_reverse_iterator(end),
+                                         std::make_reverse_iterator(begin),
+                                         intact);
+          block_slots[r * n_half + h] = {static_cast<unsigned int>(begin - first),
+                                         static_cast<unsigned int>(last.base() - first)};
         }
     version = next_mask_version++;
   }

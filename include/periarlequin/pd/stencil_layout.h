@@ -111,10 +111,12 @@ namespace PeriArlequin
     std::vector<HalfOffset>  half_offsets;
     std::vector<std::uint8_t> mask;
     /**
-     * Per (run, half offset), run-major: whether the block holds an intact bond with an owned
-     * end. The passes skip the others (most of the blocks of ghost lines).
+     * Per (run, half offset), run-major: the slots [first, end) of the run, counted from its
+     * first slot, from the first to the last of its intact bonds with an owned end (first =
+     * end if it has none). The passes visit only these: the slots outside them add zeros
+     * (the ends of ghost lines, the surfaces).
      */
-    std::vector<std::uint8_t> block_active;
+    std::vector<std::pair<unsigned int, unsigned int>> block_slots;
     /** The longest run. */
     unsigned int max_run_length = 0;
 
