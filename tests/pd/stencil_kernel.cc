@@ -15,6 +15,8 @@
 //    of the largest magnitude (round-off grows over the steps; a bond broken in one run and
 //    not in the other would change the count by 1, relative 1/count >> 1e-10; measured
 //    1.1e-14 with 1872 broken bond ends).
+//  - Neighbours: every stored bond reaches the same particle under both (the stencil finds
+//    it from the slot and the offset, the bond lists store it): tolerance 0.
 //  - Threads: the stencil kernel on 2 threads gives the same bits as on 1 (a slab of the
 //    layout goes to one thread, and the slabs' order does not depend on the threads), in
 //    every static case: tolerance 0.
@@ -71,6 +73,20 @@ namespace
                 ExcMessage("the kernels were not the ones asked for"));
     AssertThrow(a.n_owned_particles() == b.n_owned_particles(),
                 ExcMessage("the two runs hold different particles"));
+    // Under the stencil a stored bond finds its neighbour from the slot and the offset; the
+    // bond lists store it: every stored bond must reach the same particle (ids: exact).
+    {
+      const auto   &bonds_a = a.get_bonds(), &bonds_b = b.get_bonds();
+      const auto    ids_a = a.particle_ids(), ids_b = b.particle_ids();
+      unsigned int  differing = bonds_a.n_bonds() == bonds_b.n_bonds() ? 0 : 1;
+      for (unsigned int i = 0; i < bonds_a.n_owned && differing == 0; ++i)
+        for (unsigned int n = bonds_a.family_begin[i]; n < bonds_a.family_begin[i + 1]; ++n)
+          differing += ids_a[bonds_a.neighbor(i, n)] != ids_b[bonds_b.neighbor(i, n)] ||
+                       bonds_a.stencil_index[n] != bonds_b.stencil_index[n];
+      check_below(title + ", stored bonds whose neighbour differs, stencil vs bond list",
+                  Utilities::MPI::sum(differing, MPI_COMM_WORLD),
+                  0.5);
+    }
     // The stencil kernel on one thread, then on all (2) of them.
     tbb::task_arena one_thread(1);
     one_thread.execute([&] { a.compute_internal_forces(); });
