@@ -4,6 +4,7 @@
 // OpenMP runtime). Debian's deal.II is built for generic x86-64, so the passes are compiled
 // for AVX-512, AVX2 and the baseline and the loader picks one (target_clones); the file is
 // compiled without FMA contraction (-ffp-contract=off), so all three give the same bits.
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/material_model.h>
 
 #include <deal.II/base/parallel.h>
@@ -381,14 +382,6 @@ namespace PeriArlequin
           1);
     }
 
-    /** Call @p work(first, end) on subranges of [0, @p n) on the threads of this rank. */
-    template <typename Work>
-    void
-    in_parallel(const unsigned int n, const Work &work)
-    {
-      parallel::apply_to_subranges(0u, n, work, 4096);
-    }
-
     /** Resize @p values to @p n entries, zero where new (stale entries stay finite). */
     void
     fit(std::vector<double> &values, const std::size_t n)
@@ -405,7 +398,7 @@ namespace PeriArlequin
   {
     const std::size_t n_slots = layout.n_slots();
     fit(box_displacement, dim * n_slots);
-    in_parallel(layout.slot.size(), [&](const unsigned int first, const unsigned int end) {
+    for_each_subrange(layout.slot.size(), [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         for (unsigned int d = 0; d < dim; ++d)
           box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
@@ -430,11 +423,11 @@ namespace PeriArlequin
         box_volume_version = layout.mask_version();
       }
     gather_displacements(layout, u);
-    box_moment.assign(n_slots, 0.);
+    fill_zeros(box_moment, n_slots);
     for_each_slab(layout, [&](const RunRange &range) {
       moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), range);
     });
-    in_parallel(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+    for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
           const std::size_t s     = layout.slot[i];
@@ -459,14 +452,14 @@ namespace PeriArlequin
     const std::size_t n_slots = layout.n_slots();
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     fit(box_coefficients, 3 * n_slots);
-    in_parallel(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
+    for_each_subrange(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         for (unsigned int m = 0; m < 3; ++m)
           box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
     });
     gather_displacements(layout, u);
-    box_force.assign(dim * n_slots, 0.);
-    box_deviatoric.assign(n_slots, 0.);
+    fill_zeros(box_force, dim * n_slots);
+    fill_zeros(box_deviatoric, n_slots);
     for_each_slab(layout, [&](const RunRange &range) {
       force_pass(layout,
                  bonds.stencil,
@@ -476,7 +469,7 @@ namespace PeriArlequin
                  box_deviatoric.data(),
                  range);
     });
-    in_parallel(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+    for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
           const std::size_t s = layout.slot[i];

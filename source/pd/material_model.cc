@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/material_model.h>
 
 #include <deal.II/base/exceptions.h>
@@ -131,17 +132,19 @@ namespace PeriArlequin
     // (beta_i + beta_j) e + (a_i + a_j) x with a = alpha - beta theta / 3; theta / 3 is kept
     // for the deviatoric energy.
     coefficients.resize(3 * bonds.n_total);
-    for (unsigned int j = 0; j < bonds.n_total; ++j)
-      {
-        const double weight = state_weight.empty() ? 1. : state_weight[j];
-        const double q      = bonds.weighted_volume[j];
-        const double beta   = b / q;
-        const double theta  = scalars[2 * j];
-        const double alpha  = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
-        coefficients[3 * j]     = weight * beta;
-        coefficients[3 * j + 1] = weight * (alpha - beta * theta / 3.);
-        coefficients[3 * j + 2] = theta / 3.;
-      }
+    for_each_subrange(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int j = first; j < end; ++j)
+        {
+          const double weight = state_weight.empty() ? 1. : state_weight[j];
+          const double q      = bonds.weighted_volume[j];
+          const double beta   = b / q;
+          const double theta  = scalars[2 * j];
+          const double alpha  = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
+          coefficients[3 * j]     = weight * beta;
+          coefficients[3 * j + 1] = weight * (alpha - beta * theta / 3.);
+          coefficients[3 * j + 2] = theta / 3.;
+        }
+    });
   }
 
   template <int dim>

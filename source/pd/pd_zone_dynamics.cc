@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/pd_zone.h>
 
 #include <deal.II/base/mpi.h>
@@ -52,11 +53,13 @@ namespace PeriArlequin
         previous_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
         previous_applied_force = applied_force;
       }
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      {
-        u[i] += dt * v[i] + (0.5 * dt * dt) * a[i];
-        v[i] += (0.5 * dt) * a[i];
-      }
+    for_each_subrange(ghosts.n_owned(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          u[i] += dt * v[i] + (0.5 * dt * dt) * a[i];
+          v[i] += (0.5 * dt) * a[i];
+        }
+    });
   }
 
   template <int dim>
@@ -116,21 +119,28 @@ namespace PeriArlequin
     const double rho = material.density, volume = particle_volume();
     const auto   a   = state.accelerations();
     const bool   loaded = problem_data->has_body_force || problem_data->has_tractions();
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      {
-        // A slave's acceleration is that of the FE field, set by the coupling, and its load
-        // acts on the FE nodes.
-        if (slave[i])
-          {
-            applied_force[i] = Tensor<1, dim>();
-            continue;
-          }
-        // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
-        const Tensor<1, dim> b =
-          loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
-        a[i]             = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
-        applied_force[i] = volume * b;
-      }
+    const auto accelerate = [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          // A slave's acceleration is that of the FE field, set by the coupling, and its
+          // load acts on the FE nodes.
+          if (slave[i])
+            {
+              applied_force[i] = Tensor<1, dim>();
+              continue;
+            }
+          // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
+          const Tensor<1, dim> b =
+            loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
+          a[i]             = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
+          applied_force[i] = volume * b;
+        }
+    };
+    // The load functions are evaluated on one thread (a user's Function need not be thread-safe).
+    if (loaded)
+      accelerate(0, ghosts.n_owned());
+    else
+      for_each_subrange(ghosts.n_owned(), accelerate);
     prescribed.restore_accelerations(state);
     // Load plus support reaction of a prescribed component: m a - f V.
     prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
@@ -158,8 +168,10 @@ namespace PeriArlequin
   {
     const auto v = state.velocities();
     const auto a = state.accelerations();
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      v[i] += (0.5 * dt) * a[i];
+    for_each_subrange(ghosts.n_owned(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        v[i] += (0.5 * dt) * a[i];
+    });
     // Prescribed components keep the velocity of this time, set by impose_prescribed_motion().
     prescribed.restore_velocities(state);
   }
