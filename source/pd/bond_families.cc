@@ -145,10 +145,17 @@ namespace PeriArlequin
       const auto site = lattice.site(ids[i]);
       for (unsigned int k = 0; k < stencil.size(); ++k)
         {
+          // The layout finds a held neighbour at once; the lattice and the ids decide the rest.
+          unsigned int j = stencil_active ? layout.neighbor(i, k) : numbers::invalid_unsigned_int;
+          if (j != numbers::invalid_unsigned_int)
+            {
+              held(j, k);
+              continue;
+            }
           const auto other = lattice.neighbour(site, stencil[k].offset);
           if (!other)
             continue;
-          const unsigned int j = ghosts.local_index(lattice.id(*other));
+          j = ghosts.local_index(lattice.id(*other));
           if (j == numbers::invalid_unsigned_int)
             {
               AssertThrow(!extent(lattice.position(*other)),
@@ -197,7 +204,6 @@ namespace PeriArlequin
           if (state[n] != broken && (no_fail(x[i]) || no_fail(x[j])))
             state[n] = unbreakable;
           stencil_index[n] = static_cast<std::uint16_t>(k);
-          Assert(!stencil_active || layout.neighbor(i, k) == j, ExcInternalError());
           if (!stencil_active)
             neighbor_index[n] = j;
           ++n;
