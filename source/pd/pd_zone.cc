@@ -9,6 +9,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <array>
+#include <iterator>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -398,13 +399,16 @@ namespace PeriArlequin
           visit(site, x);
       });
     };
-    // The storage of the owned particles and of the ghosts to come (the particles of the
-    // ghost cells), reserved at once: grown one particle at a time, it can reach twice that.
-    std::size_t n_held = 0;
+    // The storage of the particles held now, of those to insert and of the ghosts to come
+    // (the accepted sites of the ghost cells), reserved at once: grown one particle at a
+    // time, it can reach twice that.
+    std::size_t n_accepted = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() || cell->is_ghost())
-        for_each_site(cell, [&](const auto &, const Point<dim> &) { ++n_held; });
-    particle_handler.reserve(n_held);
+        for_each_site(cell, [&](const auto &, const Point<dim> &) { ++n_accepted; });
+    particle_handler.reserve(
+      particle_handler.n_locally_owned_particles() +
+      std::distance(particle_handler.begin_ghost(), particle_handler.end_ghost()) + n_accepted);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for_each_site(cell, [&](const auto &site, const Point<dim> &x) {
