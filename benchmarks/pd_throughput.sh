@@ -24,7 +24,7 @@ repeats=${REPEATS:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 source "$top/benchmarks/common.sh"
-lammps_input="$top/../shared/bench/lammps-peri-lps/in.lps_block3d"
+lammps_input="$top/benchmarks/lammps/in.lps_block3d"
 have_lammps=false
 if command -v lmp >/dev/null && [ -f "$lammps_input" ]; then have_lammps=true; fi
 

@@ -16,7 +16,7 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * The Arlequin coupling with Lagrange multipliers (DESIGN.md section 2), registered as
+   * The Arlequin coupling with Lagrange multipliers (doc/method.md, section 4), registered as
    * "strict" (a multiplier per PD node of the overlap, H = I) and "weak" (a multiplier per FE
    * node of the overlap, H = N, or per node of a coarser Cartesian grid). Made of named operators: N at the overlap's PD nodes
    * (InterpolationOperator), the lambda-mesh H (MultiplierSpace), the multiplier system

@@ -24,7 +24,7 @@ namespace PeriArlequin
 
   namespace Parameters
   {
-    /** Where the blending weight alpha enters the forces (see DESIGN.md section 2). */
+    /** Where the blending weight alpha enters the forces (doc/method.md, section 4). */
     enum class Blending
     {
       /** FE weight inside the integral (eq. 47b), PD weight per node (eq. 55). */
