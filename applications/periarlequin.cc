@@ -6,10 +6,10 @@
  *                                          coupling, stable step) without running or writing
  *   periarlequin --print-parameters [2|3]  print every parameter with default and documentation
  */
+#include <periarlequin/simulator.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
-#include <periarlequin/simulator.h>
 
 #include <filesystem>
 #include <fstream>
@@ -40,8 +40,9 @@ namespace
     prm.enter_subsection("Geometry");
     const std::filesystem::path mesh_file = prm.get("Mesh file");
     if (!mesh_file.empty() && mesh_file.is_relative())
-      prm.set("Mesh file",
-              (std::filesystem::path(file_name).parent_path() / mesh_file).lexically_normal().string());
+      prm.set(
+        "Mesh file",
+        (std::filesystem::path(file_name).parent_path() / mesh_file).lexically_normal().string());
     prm.leave_subsection();
     PeriArlequin::Simulator<dim> simulator(prm, MPI_COMM_WORLD);
     if (check_only)
@@ -84,7 +85,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   try
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool        root  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const std::string first = argc > 1 ? argv[1] : "";
       if (first == "--print-parameters")
         {

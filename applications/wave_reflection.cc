@@ -3,10 +3,10 @@
 // (scripts/wave_reflection_study.sh). Reads the subsection "Wave reflection" of a parameter
 // file and prints one CSV row: wavelength / h, h / dx, overlap cells, R, T, time [s].
 
+#include <periarlequin/postprocess/wave_reflection.h>
+
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
-
-#include <periarlequin/postprocess/wave_reflection.h>
 
 #include <iomanip>
 #include <iostream>

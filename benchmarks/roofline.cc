@@ -65,7 +65,7 @@ main()
 {
   const long          n_stream = 20'000'000;
   std::vector<double> a(n_stream, 0.), b(n_stream, 1.), c(n_stream, 2.);
-  const double        t_triad = median_seconds([&] { triad(a.data(), b.data(), c.data(), 3., n_stream); });
+  const double t_triad = median_seconds([&] { triad(a.data(), b.data(), c.data(), 3., n_stream); });
   std::printf("triad bandwidth: %.2f GB/s\n", 3. * 8. * n_stream / t_triad * 1e-9);
 
   // In the L1 cache, repeated: only the arithmetic counts.

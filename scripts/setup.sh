@@ -5,7 +5,7 @@ set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${PERIARLEQUIN_BUILD_DIR:-$top/build}"
 
-packages="libdeal.ii-dev numdiff cmake make g++ openmpi-bin ccache perl gnuplot-nox doxygen"
+packages="libdeal.ii-dev numdiff cmake make g++ openmpi-bin ccache perl gnuplot-nox doxygen clang-format"
 missing=""
 for p in $packages; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

@@ -7,9 +7,9 @@
 //                                    round-off of pair-wise forces), and the critical stretch
 //                                    is the factor times the LPS formula (1e-12)
 
-#include <deal.II/base/mpi.h>
-
 #include <periarlequin/simulator.h>
+
+#include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <iostream>
@@ -41,9 +41,8 @@ main(int argc, char **argv)
       const double E = prm.get_double("Young's modulus");
       prm.leave_subsection();
       prm.enter_subsection("Peridynamics");
-      const double G0 = prm.get_double("Critical energy release rate");
-      const double delta =
-        prm.get_double("Horizon factor") * prm.get_double("Lattice spacing");
+      const double G0    = prm.get_double("Critical energy release rate");
+      const double delta = prm.get_double("Horizon factor") * prm.get_double("Lattice spacing");
       prm.enter_subsection("scaled LPS");
       const double factor = prm.get_double("Critical stretch factor");
       prm.leave_subsection();
@@ -53,8 +52,8 @@ main(int argc, char **argv)
         std::abs(simulator.get_pd_zone()->get_critical_stretch() / expected - 1);
 
       std::cout << "momentum drift / initial momentum = " << drift
-                << "\ncritical stretch / (factor x plane-stress formula) - 1 = "
-                << stretch_error << std::endl;
+                << "\ncritical stretch / (factor x plane-stress formula) - 1 = " << stretch_error
+                << std::endl;
       AssertThrow(drift < 1e-10 && stretch_error < 1e-12,
                   ExcMessage("the example case is not verified"));
       std::cout << "verified" << std::endl;

@@ -1,13 +1,7 @@
 #ifndef periarlequin_simulator_h
 #define periarlequin_simulator_h
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/lac/la_parallel_vector.h>
-
-#include <periarlequin/adaptivity/conversion_criterion.h>
+#include <periarlequin/adaptivity/pd_zone_growth.h>
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/coupling/blending_field.h>
@@ -21,6 +15,12 @@
 #include <periarlequin/pd/pd_zone.h>
 #include <periarlequin/postprocess/postprocessor.h>
 #include <periarlequin/time/predictor_corrector.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <memory>
 
@@ -71,14 +71,10 @@ namespace PeriArlequin
     advance();
 
     /**
-     * Between steps: the FE cells that the conversion criterion flags become pure PD. Their
-     * boxes join the PD region; the overlap band and the slave layer move outward; new
-     * particles fill the lattice sites the grown zone needs, with displacement, velocity and
-     * acceleration interpolated from the FE field; the FE zone drops the DoFs of the
-     * converted cells, keeping its field elsewhere; the coupling is rebuilt and the
-     * accelerations recomputed. Existing particles keep their state and broken bonds.
-     * Then rebalance() with Adaptive PD zone/Load imbalance tolerance.
-     * Returns the number of cells converted (over all ranks).
+     * Between steps: the FE cells that the conversion criterion flags become pure PD
+     * (PDZoneGrowth::grow()); the coupling is rebuilt and the accelerations recomputed. Then
+     * rebalance() with Adaptive PD zone/Load imbalance tolerance. Returns the number of cells
+     * converted (over all ranks).
      */
     unsigned int
     grow_pd_zone();
@@ -172,6 +168,7 @@ namespace PeriArlequin
     get_stable_time_step() const;
 
   private:
+    // The stages of setup() (source/simulator/setup.cc).
     /**
      * The coarse mesh: the box of Geometry, or the Gmsh file of Geometry/Mesh file (then the
      * corners become its bounding box).
@@ -181,8 +178,48 @@ namespace PeriArlequin
     /** BlendingField::check_against_mesh() with the cell size and points of this mesh. */
     void
     check_blending_against_mesh();
+    /** The PD zone's object (no particles yet) and the cell weights of the partition. */
+    void
+    create_pd_zone();
+    /** The FE zone's DoFs and matrices, with the blending weights of the coupling. */
     void
     setup_fe_zone();
+    /** FE stable step, initial (or checkpointed) state, contact. */
+    void
+    initialize_fe_zone(const double dt);
+    /** Particles, bonds and state (or the checkpoint's), coupling operators, stable step. */
+    void
+    initialize_pd_zone(const double dt);
+    /** Refuse a time step above the estimated stable step. */
+    void
+    check_time_step() const;
+    /** The zones in the integrator's order, the number of steps, the integrator. */
+    void
+    create_integrator();
+    /** What the case is, on rank 0. */
+    void
+    print_summary() const;
+    void
+    print_pd_summary() const;
+
+    // Resuming from a checkpoint (source/simulator/checkpoint.cc).
+    /** read_checkpoint(), then the mesh and each cell's owner in the checkpointed run. */
+    void
+    load_checkpointed_mesh();
+    /** The checkpoint's (grown) PD region. */
+    void
+    restore_pd_region();
+    void
+    restore_fe_state();
+    /** The particles of the checkpoint and each rank's share of the external work. */
+    void
+    restore_pd_state(const double dt);
+    /** The integrator at the checkpoint's step, the counters, the partition. */
+    void
+    resume_run();
+    void
+    print_resume_summary() const;
+
     /** Repartition with the cell weights: zones' state moved, coupling rebuilt. */
     void
     repartition_zones();
@@ -221,33 +258,33 @@ namespace PeriArlequin
     void
     report_progress(const bool force);
 
-    const MPI_Comm      communicator;
-    ConditionalOStream  pcout;
+    const MPI_Comm     communicator;
+    ConditionalOStream pcout;
     /** Local timings; statistics over ranks are gathered at the end of run(). */
-    TimerOutput         timer;
+    TimerOutput timer;
 
-    Parameters::Geometry         geometry;
-    Parameters::Material         material;
-    Parameters::FiniteElements   fe_parameters;
-    Parameters::Time             time_parameters;
-    Parameters::Output           output_parameters;
-    Parameters::Checkpoint       checkpoint_parameters;
+    Parameters::Geometry       geometry;
+    Parameters::Material       material;
+    Parameters::FiniteElements fe_parameters;
+    Parameters::Time           time_parameters;
+    Parameters::Output         output_parameters;
+    Parameters::Checkpoint     checkpoint_parameters;
     /** The parameters a checkpoint must agree with (checkpointed_parameters()). */
-    std::vector<std::string>     physics_parameters;
+    std::vector<std::string> physics_parameters;
     /** What a checkpoint holds besides the cell data; set while resuming from one. */
     struct CheckpointRecord;
     std::unique_ptr<CheckpointRecord> resumed;
-    std::string                  resume_directory;
-    double                       last_checkpoint_wall_time = 0.;
+    std::string                       resume_directory;
+    double                            last_checkpoint_wall_time = 0.;
     /** While resuming: each cell's owner in the checkpointed run (by active cell index). */
-    std::vector<unsigned int>    saved_owner;
+    std::vector<unsigned int> saved_owner;
     /** Cell weights that replace the PD ones while not empty (restore_saved_partition()). */
-    std::vector<unsigned int>    partition_weights;
+    std::vector<unsigned int>     partition_weights;
     Parameters::Peridynamics<dim> pd_parameters;
-    Parameters::Coupling         coupling_parameters;
-    ProblemData<dim>             problem_data;
+    Parameters::Coupling          coupling_parameters;
+    ProblemData<dim>              problem_data;
     /** Where the pure-PD energies are measured. */
-    Region<dim>                       monitor_region;
+    Region<dim> monitor_region;
     /** Output/Sample line, or nullptr. */
     std::unique_ptr<LineSamples<dim>> line_samples;
 
@@ -262,26 +299,22 @@ namespace PeriArlequin
     std::unique_ptr<FractureCriterion<dim>>   fracture_criterion;
     std::string                               contact_model;
     std::unique_ptr<Contact<dim>>             contact;
-    /** Adaptive PD zone: the criterion (nullptr: fixed zone) and how often it is asked. */
-    std::unique_ptr<ConversionCriterion<dim>> conversion_criterion;
-    unsigned int                              conversion_interval = 0;
-    double                                    imbalance_tolerance = 0.1;
+    /** The growth of an adaptive PD zone (nullptr: a fixed zone). */
+    std::unique_ptr<PDZoneGrowth<dim>>               zone_growth;
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
-    std::unique_ptr<EnergyHistory>            energy_history;
-    std::unique_ptr<PredictorCorrector<dim>>  integrator;
+    std::unique_ptr<EnergyHistory>                   energy_history;
+    std::unique_ptr<PredictorCorrector<dim>>         integrator;
     /** The zones the case has, PD before FE (the order the integrator needs). */
-    std::vector<IntegratedZone *>             zones;
+    std::vector<IntegratedZone *> zones;
 
-    unsigned int n_steps            = 0;
-    unsigned int converted_cells    = 0;
-    unsigned int repartitions       = 0;
-    double       conversion_energy  = 0.;
-    double       stable_time_step   = 0.;
-    bool         setup_done         = false;
+    unsigned int n_steps          = 0;
+    unsigned int repartitions     = 0;
+    double       stable_time_step = 0.;
+    bool         setup_done       = false;
     Timer        wall_clock;
     double       last_progress_time = 0.;
     /** The step run() started from (0, or a checkpoint's step). */
-    unsigned int first_step         = 0;
+    unsigned int first_step = 0;
   };
 } // namespace PeriArlequin
 

@@ -1,10 +1,10 @@
+#include <periarlequin/adaptivity/conversion_criterion.h>
+#include <periarlequin/base/parameters.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values.h>
-
-#include <periarlequin/adaptivity/conversion_criterion.h>
-#include <periarlequin/base/parameters.h>
 
 #include <algorithm>
 #include <sstream>
@@ -39,13 +39,12 @@ namespace PeriArlequin
         {
           if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
             continue;
-          const Box<dim> box   = cell_box<dim>(cell);
-          auto           first = std::lower_bound(points.begin(),
-                                        points.end(),
-                                        box.lower[0] - distance,
-                                        [](const Point<dim> &p, const double x) {
-                                          return p[0] < x;
-                                        });
+          const Box<dim> box = cell_box<dim>(cell);
+          auto           first =
+            std::lower_bound(points.begin(),
+                             points.end(),
+                             box.lower[0] - distance,
+                             [](const Point<dim> &p, const double x) { return p[0] < x; });
           for (; first != points.end() && (*first)[0] <= box.upper[0] + distance; ++first)
             if (box.distance(*first) < distance)
               {
@@ -192,10 +191,10 @@ namespace PeriArlequin
   {
     const auto &u = fe_zone.get_state().displacement;
     u.update_ghost_values();
-    const auto &dof_handler = fe_zone.get_dof_handler();
-    const QMidpoint<dim>             centre;
-    FEValues<dim>                    fe_values(dof_handler.get_fe(0), centre, update_gradients);
-    const FEValuesExtractors::Vector displacement(0);
+    const auto                          &dof_handler = fe_zone.get_dof_handler();
+    const QMidpoint<dim>                 centre;
+    FEValues<dim>                        fe_values(dof_handler.get_fe(0), centre, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(1);
     std::vector<Point<dim>>              strained;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -213,7 +212,7 @@ namespace PeriArlequin
     if (buffer > 0)
       {
         // Measured from the flagged cells' centres: half a cell is added to the buffer.
-        strained = gather_points(strained, pd_zone.get_communicator());
+        strained               = gather_points(strained, pd_zone.get_communicator());
         const double half_cell = 0.5 * dof_handler.begin_active()->diameter() / std::sqrt(dim);
         mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
       }

@@ -1,7 +1,7 @@
+#include <periarlequin/base/crack_tip_field.h>
+
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
-
-#include <periarlequin/base/crack_tip_field.h>
 
 #include <cmath>
 
@@ -17,7 +17,10 @@ namespace PeriArlequin
                       Patterns::List(Patterns::Integer(0, 2 * dim - 1)),
                       "Boundary ids whose displacement is the crack-tip field of eq. 82 (their "
                       "own Type must be free); empty: none.");
-    prm.declare_entry("Tip", "0, 0", Patterns::List(Patterns::Double(), 2, 2), "Crack tip x, y [m].");
+    prm.declare_entry("Tip",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "Crack tip x, y [m].");
     prm.declare_entry("Crack direction",
                       "0",
                       Patterns::Double(-360, 360),
@@ -46,10 +49,11 @@ namespace PeriArlequin
     boundary_ids.clear();
     for (const std::string &id : Utilities::split_string_list(prm.get("Boundary ids")))
       boundary_ids.push_back(Utilities::string_to_int(id));
-    const auto coordinates = Utilities::string_to_double(Utilities::split_string_list(prm.get("Tip")));
-    tip                    = Point<2>(coordinates[0], coordinates[1]);
-    direction              = prm.get_double("Crack direction") * numbers::PI / 180.;
-    phase_angle            = prm.get_double("Phase angle") * numbers::PI / 180.;
+    const auto coordinates =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Tip")));
+    tip                          = Point<2>(coordinates[0], coordinates[1]);
+    direction                    = prm.get_double("Crack direction") * numbers::PI / 180.;
+    phase_angle                  = prm.get_double("Phase angle") * numbers::PI / 180.;
     const std::string expression = prm.get("Stress intensity factor");
     prm.leave_subsection();
     initialize(expression, material);
@@ -104,12 +108,12 @@ namespace PeriArlequin
     const double x = c * dx + s * dy, y = -s * dx + c * dy;
     const double r = std::sqrt(x * x + y * y), theta = std::atan2(y, x);
     const auto [K_I, K_II] = stress_intensity_factors(this->get_time());
-    const double scale = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
+    const double scale     = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
     const double ch = std::cos(theta / 2), sh = std::sin(theta / 2);
-    const double ux = scale * (K_I * ch * (kappa - 1. + 2. * sh * sh) +
-                               K_II * sh * (kappa + 1. + 2. * ch * ch));
-    const double uy = scale * (K_I * sh * (kappa + 1. - 2. * ch * ch) -
-                               K_II * ch * (kappa - 1. - 2. * sh * sh));
+    const double ux =
+      scale * (K_I * ch * (kappa - 1. + 2. * sh * sh) + K_II * sh * (kappa + 1. + 2. * ch * ch));
+    const double uy =
+      scale * (K_I * sh * (kappa + 1. - 2. * ch * ch) - K_II * ch * (kappa - 1. - 2. * sh * sh));
     values    = 0.;
     values(0) = c * ux - s * uy;
     values(1) = s * ux + c * uy;

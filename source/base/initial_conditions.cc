@@ -78,11 +78,11 @@ namespace PeriArlequin
                 Patterns::Double(),
                 "a2, relative amplitude of the short-wave modulation [-].");
     entries.add("Width", width, Patterns::Double(), "w1, length of the pulse, > 0 [m].");
-    entries.add("Modulation wavelength",
-                modulation_wavelength,
+    entries.add("Modulation wavelength", modulation_wavelength, Patterns::Double(), "w2, > 0 [m].");
+    entries.add("Centre",
+                centre,
                 Patterns::Double(),
-                "w2, > 0 [m].");
-    entries.add("Centre", centre, Patterns::Double(), "x0, x coordinate of the pulse's centre [m].");
+                "x0, x coordinate of the pulse's centre [m].");
     const SelectionNames<unsigned int> axes = {{"x", 0}, {"y", 1}, {"z", 2}};
     entries.add("Component",
                 component,
@@ -118,9 +118,9 @@ namespace PeriArlequin
     const double   s = x[0] - centre;
     Tensor<1, dim> u;
     if (std::abs(s) <= width / 2)
-      u[component] = amplitude * (1 + std::cos(2 * numbers::PI * s / width)) *
-                     (1 + modulation * std::cos(2 * numbers::PI * (s + width / 2) /
-                                                modulation_wavelength));
+      u[component] =
+        amplitude * (1 + std::cos(2 * numbers::PI * s / width)) *
+        (1 + modulation * std::cos(2 * numbers::PI * (s + width / 2) / modulation_wavelength));
     return u;
   }
 

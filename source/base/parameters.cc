@@ -4,8 +4,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
-#include <sstream>
 #include <limits>
+#include <sstream>
 
 namespace PeriArlequin
 {
@@ -141,9 +141,7 @@ namespace PeriArlequin
     {
       ParameterEntries::parse(prm, "Material", *this);
       if (!(youngs_modulus > 0))
-        throw_invalid_parameter("Material/Young's modulus",
-                                youngs_modulus,
-                                "a value > 0 [Pa]");
+        throw_invalid_parameter("Material/Young's modulus", youngs_modulus, "a value > 0 [Pa]");
       if (!(poissons_ratio > -1 && poissons_ratio < 0.5))
         throw_invalid_parameter("Material/Poisson's ratio",
                                 poissons_ratio,
@@ -167,9 +165,9 @@ namespace PeriArlequin
     double
     Material::effective_lambda(const unsigned int dim) const
     {
-      const double mu     = shear_modulus();
-      const double lambda = youngs_modulus * poissons_ratio /
-                            ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
+      const double mu = shear_modulus();
+      const double lambda =
+        youngs_modulus * poissons_ratio / ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
       if (dim == 2 && planar_model == PlanarModel::plane_stress)
         return 2. * lambda * mu / (lambda + 2. * mu);
       return lambda;
@@ -265,12 +263,13 @@ namespace PeriArlequin
                   print_timing,
                   Patterns::Bool(),
                   "Print the TimerOutput summary at the end of the run.");
-      entries.add("Sample line",
-                  sample_line,
-                  Patterns::Anything(),
-                  "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
-                  "<base>_line_<step>.csv with the displacement and velocity of the FE nodes on it and "
-                  "the PD particles within half a lattice spacing of it. Empty: none.");
+      entries.add(
+        "Sample line",
+        sample_line,
+        Patterns::Anything(),
+        "Segment 'x0, y0 : x1, y1' [m]: with every field output, write "
+        "<base>_line_<step>.csv with the displacement and velocity of the FE nodes on it and "
+        "the PD particles within half a lattice spacing of it. Empty: none.");
       entries.add("Monitor region",
                   monitor_region,
                   Patterns::Anything(),

@@ -1,5 +1,5 @@
-#include <periarlequin/base/parameters.h>
 #include <periarlequin/base/crack_tip_field.h>
+#include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 
 #include <deal.II/base/utilities.h>
@@ -39,64 +39,63 @@ namespace PeriArlequin
   template <int dim>
   void
   declare_vector_function(ParameterHandler &prm, const std::string &name, const std::string &doc)
-    {
-      prm.enter_subsection(name);
-      prm.declare_entry("Function expression",
-                        zero_expression<dim>(),
-                        Patterns::Anything(),
-                        doc + " One muparser expression per component, separated by ';'.");
-      prm.declare_entry("Function constants",
-                        "",
-                        Patterns::Anything(),
-                        "Named constants used in the expression, e.g. 'a1=3e-4, w1=0.48' "
-                        "(pi is predefined).");
-      prm.declare_entry("Variable names",
-                        dim == 2 ? "x,y,t" : "x,y,z,t",
-                        Patterns::Anything(),
-                        "Names of the coordinates and of time in the expression.");
-      prm.leave_subsection();
-    }
+  {
+    prm.enter_subsection(name);
+    prm.declare_entry("Function expression",
+                      zero_expression<dim>(),
+                      Patterns::Anything(),
+                      doc + " One muparser expression per component, separated by ';'.");
+    prm.declare_entry("Function constants",
+                      "",
+                      Patterns::Anything(),
+                      "Named constants used in the expression, e.g. 'a1=3e-4, w1=0.48' "
+                      "(pi is predefined).");
+    prm.declare_entry("Variable names",
+                      dim == 2 ? "x,y,t" : "x,y,z,t",
+                      Patterns::Anything(),
+                      "Names of the coordinates and of time in the expression.");
+    prm.leave_subsection();
+  }
 
   template <int dim>
   void
   parse_vector_function(ParameterHandler               &prm,
-                   const std::string              &path,
-                   const std::string              &name,
-                   Functions::ParsedFunction<dim> &function)
-    {
-      prm.enter_subsection(name);
-      const std::string expression = prm.get("Function expression");
-      const std::string constants  = prm.get("Function constants");
-      const std::string entry      = path + name + "/Function expression";
-      if (Utilities::split_string_list(expression, ';').size() != static_cast<std::size_t>(dim))
-        {
-          prm.leave_subsection();
-          throw_invalid_parameter(entry,
-                                  expression,
-                                  std::to_string(dim) + " expressions separated by ';', one per "
-                                                        "component");
-        }
-      try
-        {
-          function.parse_parameters(prm);
-          // The parser compiles lazily: evaluate once so that a syntax error shows here.
-          Vector<double> values(dim);
-          function.vector_value(Point<dim>(), values);
-        }
-      catch (const ExceptionBase &error)
-        {
-          prm.leave_subsection();
-          std::ostringstream parser_message;
-          error.print_info(parser_message);
-          throw_invalid_parameter(entry,
-                                  expression,
-                                  "a valid muparser expression in the 'Variable names' and the "
-                                  "'Function constants' ('" +
-                                    constants + "'). " +
-                                    Utilities::trim(parser_message.str()));
-        }
-      prm.leave_subsection();
-    }
+                        const std::string              &path,
+                        const std::string              &name,
+                        Functions::ParsedFunction<dim> &function)
+  {
+    prm.enter_subsection(name);
+    const std::string expression = prm.get("Function expression");
+    const std::string constants  = prm.get("Function constants");
+    const std::string entry      = path + name + "/Function expression";
+    if (Utilities::split_string_list(expression, ';').size() != static_cast<std::size_t>(dim))
+      {
+        prm.leave_subsection();
+        throw_invalid_parameter(entry,
+                                expression,
+                                std::to_string(dim) + " expressions separated by ';', one per "
+                                                      "component");
+      }
+    try
+      {
+        function.parse_parameters(prm);
+        // The parser compiles lazily: evaluate once so that a syntax error shows here.
+        Vector<double> values(dim);
+        function.vector_value(Point<dim>(), values);
+      }
+    catch (const ExceptionBase &error)
+      {
+        prm.leave_subsection();
+        std::ostringstream parser_message;
+        error.print_info(parser_message);
+        throw_invalid_parameter(entry,
+                                expression,
+                                "a valid muparser expression in the 'Variable names' and the "
+                                "'Function constants' ('" +
+                                  constants + "'). " + Utilities::trim(parser_message.str()));
+      }
+    prm.leave_subsection();
+  }
 
   template <int dim>
   void
@@ -154,11 +153,13 @@ namespace PeriArlequin
                             "layer inside the domain); those within dx of a traction face "
                             "carry t / dx.");
         declare_component_selection<dim>(
-          prm, "Components whose displacement is prescribed (Type = displacement).");
-        declare_vector_function<dim>(prm,
-                              "Function",
-                              "Prescribed displacement [m] (Type = displacement) or traction "
-                              "[Pa] (Type = traction) as a function of position and time.");
+          prm,
+          "Components whose displacement is prescribed (Type = displacement).");
+        declare_vector_function<dim>(
+          prm,
+          "Function",
+          "Prescribed displacement [m] (Type = displacement) or traction "
+          "[Pa] (Type = traction) as a function of position and time.");
         prm.leave_subsection();
       }
     CrackTipField<dim>::declare_parameters(prm);
@@ -184,9 +185,10 @@ namespace PeriArlequin
         const std::string name = "Boundary " + std::to_string(b);
         prm.enter_subsection(name);
         BoundaryCondition<dim> &condition = boundary_conditions[b];
-        condition.type = selection_value(prm.get("Type"), boundary_type_names);
-        condition.components = parse_component_selection<dim>(prm);
-        if (condition.type == BoundaryType::displacement && condition.components.n_selected_components() == 0)
+        condition.type                    = selection_value(prm.get("Type"), boundary_type_names);
+        condition.components              = parse_component_selection<dim>(prm);
+        if (condition.type == BoundaryType::displacement &&
+            condition.components.n_selected_components() == 0)
           throw_invalid_parameter("Boundary conditions/" + name + "/Components",
                                   prm.get("Components"),
                                   "at least one of x, y" + std::string(dim == 3 ? ", z" : "") +

@@ -19,7 +19,7 @@ namespace PeriArlequin
                  const std::string &parameter,
                  const std::string &what)
     {
-      const auto parts = Utilities::split_string_list(text, ':');
+      const auto              parts = Utilities::split_string_list(text, ':');
       std::vector<Point<dim>> points;
       try
         {
@@ -176,8 +176,11 @@ namespace PeriArlequin
       {
         if (box_text.empty())
           continue;
-        const auto corners = parse_points<dim>(
-          box_text, 2, parameter, "boxes 'lower corner : upper corner' separated by ';'");
+        const auto corners =
+          parse_points<dim>(box_text,
+                            2,
+                            parameter,
+                            "boxes 'lower corner : upper corner' separated by ';'");
         for (unsigned int d = 0; d < dim; ++d)
           if (!(corners[1][d] > corners[0][d]))
             throw_invalid_parameter(parameter,
@@ -218,8 +221,8 @@ namespace PeriArlequin
         const double s = (normal * (origin - p)) / denominator;
         if (s < 0 || s > 1)
           return false;
-        const Tensor<1, dim> w   = p + s * d - origin;
-        const double         aa  = edge_a * edge_a, bb = edge_b * edge_b, ab = edge_a * edge_b;
+        const Tensor<1, dim> w  = p + s * d - origin;
+        const double         aa = edge_a * edge_a, bb = edge_b * edge_b, ab = edge_a * edge_b;
         const double         det = aa * bb - ab * ab;
         const double         r   = (bb * (w * edge_a) - ab * (w * edge_b)) / det;
         const double         t   = (aa * (w * edge_b) - ab * (w * edge_a)) / det;

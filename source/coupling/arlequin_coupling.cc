@@ -58,9 +58,9 @@ namespace PeriArlequin
                                     PDZone<dim>              &pd,
                                     const double              dt)
   {
-    fe_zone   = &fe;
-    pd_zone   = &pd;
-    time_step = dt;
+    fe_zone                     = &fe;
+    pd_zone                     = &pd;
+    time_step                   = dt;
     const MPI_Comm communicator = pd.get_communicator();
 
     overlap_particles.clear();
@@ -105,29 +105,40 @@ namespace PeriArlequin
         std::vector<Point<dim>> positions;
         for (const unsigned int i : overlap_particles)
           positions.push_back(pd.reference_positions()[i]);
-        space =
-          std::make_unique<GridMultiplierSpace<dim>>(
-            overlap, fe, positions, multiplier_spacing, multiplier_grid_offset);
+        space = std::make_unique<GridMultiplierSpace<dim>>(overlap,
+                                                           fe,
+                                                           positions,
+                                                           multiplier_spacing,
+                                                           multiplier_grid_offset);
       }
     space->initialize_vector(lambda);
     space->initialize_vector(rhs);
     if (lambda.size() == 0)
       throw_invalid_parameter(overlap_parameter, overlap_value, "an overlap that holds FE nodes");
-    solver = std::make_unique<MultiplierSolver<dim>>(
-      *space, overlap, fe_inverse_mass, pd_inverse_mass, dt, parameters.multiplier_solver);
+    solver = std::make_unique<MultiplierSolver<dim>>(*space,
+                                                     overlap,
+                                                     fe_inverse_mass,
+                                                     pd_inverse_mass,
+                                                     dt,
+                                                     parameters.multiplier_solver);
     damping.reset();
     if (parameters.damping)
-      damping = std::make_unique<FineScaleDamping<dim>>(
-        parameters, fe.get_material(), blending, pd, overlap_particles, overlap, dt);
+      damping = std::make_unique<FineScaleDamping<dim>>(parameters,
+                                                        fe.get_material(),
+                                                        blending,
+                                                        pd,
+                                                        overlap_particles,
+                                                        overlap,
+                                                        dt);
 
     connect_fe_forces(parameters, blending, fe, slaves);
   }
 
   template <int dim>
   void
-  ArlequinCoupling<dim>::constraint(const VectorType                  &x,
+  ArlequinCoupling<dim>::constraint(const VectorType               &x,
                                     ArrayView<const Tensor<1, dim>> y,
-                                    VectorType                        &g) const
+                                    VectorType                     &g) const
   {
     x.update_ghost_values();
     overlap.vmult(overlap_values, x);
@@ -244,7 +255,7 @@ namespace PeriArlequin
     bool
     register_arlequin_couplings()
     {
-      using Mesh = typename ArlequinCoupling<dim>::MultiplierMesh;
+      using Mesh         = typename ArlequinCoupling<dim>::MultiplierMesh;
       const auto creator = [](const Mesh mesh) {
         return [mesh](const Parameters::Coupling &parameters) {
           return std::unique_ptr<Coupling<dim>>(new ArlequinCoupling<dim>(parameters, mesh));

@@ -195,7 +195,8 @@ namespace PeriArlequin
             throw_invalid_parameter("Coupling/Finite element region",
                                     fe_region_text,
                                     "boxes that neither touch nor cross the pure PD region "
-                                    "(here " + box_text(fe_box) + " meets " + box_text(pd_box) +
+                                    "(here " +
+                                      box_text(fe_box) + " meets " + box_text(pd_box) +
                                       "): the alpha = 0 and alpha = 1 edges must be an "
                                       "overlap apart");
           unsigned int across = 0;
@@ -213,8 +214,7 @@ namespace PeriArlequin
         }
 
     for (const Point<dim> &p : points)
-      if (!pure_pd.contains(p, length_tolerance) &&
-          !overlap_region.contains(p, length_tolerance) &&
+      if (!pure_pd.contains(p, length_tolerance) && !overlap_region.contains(p, length_tolerance) &&
           !pure_fe.contains(p, length_tolerance))
         {
           std::ostringstream value;

@@ -31,9 +31,7 @@ namespace PeriArlequin
       });
     if (parameters.blending == Parameters::Blending::energy)
       fe_zone.set_interface_force(
-        [&slaves](LinearAlgebra::distributed::Vector<double> &force) {
-          slaves.add_forces(force);
-        });
+        [&slaves](LinearAlgebra::distributed::Vector<double> &force) { slaves.add_forces(force); });
   }
 
   template void

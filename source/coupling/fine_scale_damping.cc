@@ -18,7 +18,7 @@ namespace PeriArlequin
     const double wave_speed = parameters.damping_wave_speed > 0 ?
                                 parameters.damping_wave_speed :
                                 material.longitudinal_wave_speed(dim);
-    double largest = 0;
+    double       largest    = 0;
     for (const unsigned int i : particles)
       {
         const double alpha = pd_zone.blending_weights()[i];
@@ -53,7 +53,8 @@ namespace PeriArlequin
       {
         const unsigned int i = particles[r];
         pd_zone.get_state().accelerations()[i] -=
-          coefficient[r] * (pd_zone.get_state().velocities()[i] - overlap.interpolate(fe_velocity, r));
+          coefficient[r] *
+          (pd_zone.get_state().velocities()[i] - overlap.interpolate(fe_velocity, r));
       }
   }
 

@@ -24,12 +24,11 @@ namespace PeriArlequin
     for (const unsigned int i : particles)
       {
         const auto &[triangulation_cell, unit_point] = locations[i];
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          &dof_handler.get_triangulation(),
-          triangulation_cell->level(),
-          triangulation_cell->index(),
-          &dof_handler);
-        const auto &fe = cell->get_fe();
+        const typename DoFHandler<dim>::active_cell_iterator cell(&dof_handler.get_triangulation(),
+                                                                  triangulation_cell->level(),
+                                                                  triangulation_cell->index(),
+                                                                  &dof_handler);
+        const auto                                          &fe = cell->get_fe();
         if (fe.n_dofs_per_cell() == 0)
           {
             std::ostringstream where;

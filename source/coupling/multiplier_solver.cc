@@ -1,16 +1,16 @@
+#include <periarlequin/coupling/multiplier_solver.h>
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-
-#include <periarlequin/coupling/multiplier_solver.h>
 
 namespace PeriArlequin
 {
   template <int dim>
-  MultiplierSolver<dim>::MultiplierSolver(MultiplierSpace<dim>             &space,
-                                          const InterpolationOperator<dim> &overlap,
-                                          const VectorType                 &fe_inverse_mass,
-                                          const std::vector<double>        &pd_inverse_mass,
-                                          const double                      time_step,
+  MultiplierSolver<dim>::MultiplierSolver(MultiplierSpace<dim>              &space,
+                                          const InterpolationOperator<dim>  &overlap,
+                                          const VectorType                  &fe_inverse_mass,
+                                          const std::vector<double>         &pd_inverse_mass,
+                                          const double                       time_step,
                                           const Parameters::MultiplierSolver method)
     : space(space)
     , overlap(overlap)
@@ -49,8 +49,8 @@ namespace PeriArlequin
       diagonal.local_element(m) =
         free_rows.local_element(m) > 0 ? 1. / diagonal.local_element(m) : 0.;
     preconditioner.reinit(diagonal);
-    a_operator.vmult = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
-    a_operator.reinit_range_vector  = [this](VectorType &v, const bool) {
+    a_operator.vmult               = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
+    a_operator.reinit_range_vector = [this](VectorType &v, const bool) {
       this->space.initialize_vector(v);
     };
     a_operator.reinit_domain_vector = a_operator.reinit_range_vector;
@@ -105,9 +105,8 @@ namespace PeriArlequin
     if (method == Parameters::MultiplierSolver::diagonal)
       {
         for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
-          lambda.local_element(m) = free_rows.local_element(m) > 0 ?
-                                      rhs.local_element(m) / diagonal.local_element(m) :
-                                      0.;
+          lambda.local_element(m) =
+            free_rows.local_element(m) > 0 ? rhs.local_element(m) / diagonal.local_element(m) : 0.;
         return;
       }
     free_rhs = rhs;
@@ -120,8 +119,8 @@ namespace PeriArlequin
       }
     // Start from the Jacobi solution; stop at a relative residual of 1e-12.
     preconditioner.vmult(lambda, free_rhs);
-    SolverControl         control(1000, 1e-12 * rhs_norm, false, false);
-    SolverCG<VectorType>  cg(control);
+    SolverControl        control(1000, 1e-12 * rhs_norm, false, false);
+    SolverCG<VectorType> cg(control);
     try
       {
         cg.solve(a_operator, lambda, free_rhs, preconditioner);

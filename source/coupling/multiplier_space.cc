@@ -1,11 +1,10 @@
+#include <periarlequin/base/parameters.h>
 #include <periarlequin/coupling/multiplier_space.h>
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-
-#include <periarlequin/base/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +28,7 @@ namespace PeriArlequin
 
   template <int dim>
   StrictMultiplierSpace<dim>::StrictMultiplierSpace(const InterpolationOperator<dim> &overlap,
-                                                    const MPI_Comm communicator)
+                                                    const MPI_Comm                    communicator)
     : overlap(overlap)
   {
     this->reinit_partitioner(dim * overlap.n_rows(), communicator);
@@ -65,8 +64,7 @@ namespace PeriArlequin
       {
         Tensor<1, dim> sum;
         for (const auto &entry : overlap.row(r))
-          sum[entry.component] +=
-            entry.value * entry.value * fe_weights.local_element(entry.dof);
+          sum[entry.component] += entry.value * entry.value * fe_weights.local_element(entry.dof);
         for (unsigned int d = 0; d < dim; ++d)
           diagonal.local_element(dim * r + d) = sum[d] + pd_weights[r];
       }
@@ -117,7 +115,7 @@ namespace PeriArlequin
                                                    VectorType                &diagonal) const
   {
     // B = N^T N couples DoFs of a common cell: the FE zone's pattern holds it.
-    const auto &partitioner = *fe_weights.get_partitioner();
+    const auto                    &partitioner = *fe_weights.get_partitioner();
     TrilinosWrappers::SparseMatrix B;
     fe_zone.reinit_matrix(B);
     VectorType second_term;
@@ -136,7 +134,7 @@ namespace PeriArlequin
     second_term.compress(VectorOperation::add);
     for (unsigned int k = 0; k < multiplier_dofs.size(); ++k)
       {
-        const types::global_dof_index m = partitioner.local_to_global(multiplier_dofs[k]);
+        const types::global_dof_index m   = partitioner.local_to_global(multiplier_dofs[k]);
         double                        sum = second_term.local_element(multiplier_dofs[k]);
         for (auto entry = B.begin(m); entry != B.end(m); ++entry)
           sum += entry->value() * entry->value() * fe_weights(entry->column());
@@ -148,14 +146,14 @@ namespace PeriArlequin
   GridMultiplierSpace<dim>::GridMultiplierSpace(const InterpolationOperator<dim> &overlap,
                                                 const FEZone<dim>                &fe_zone,
                                                 const std::vector<Point<dim>>    &positions,
-                                                const double spacing_in_cells,
-                                                const double offset)
+                                                const double                      spacing_in_cells,
+                                                const double                      offset)
     : overlap(overlap)
     , fe_zone(fe_zone)
   {
-    const MPI_Comm communicator = fe_zone.get_dof_handler().get_communicator();
-    const unsigned int n_ranks  = Utilities::MPI::n_mpi_processes(communicator);
-    const unsigned int rank     = Utilities::MPI::this_mpi_process(communicator);
+    const MPI_Comm     communicator = fe_zone.get_dof_handler().get_communicator();
+    const unsigned int n_ranks      = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank         = Utilities::MPI::this_mpi_process(communicator);
 
     // The grid: from the lower corner of all overlap nodes, enough cells to hold them.
     std::array<double, dim> lower, upper;
@@ -176,7 +174,7 @@ namespace PeriArlequin
     for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
         {
-          const BoundingBox<dim> box = cell->bounding_box();
+          const BoundingBox<dim> box  = cell->bounding_box();
           bool                   near = true;
           for (unsigned int d = 0; d < dim; ++d)
             near = near && box.upper_bound(d) >= lower[d] && box.lower_bound(d) <= upper[d];
@@ -184,7 +182,7 @@ namespace PeriArlequin
             for (unsigned int d = 0; d < dim; ++d)
               cell_extent = std::max(cell_extent, box.side_length(d));
         }
-    cell_extent           = Utilities::MPI::max(cell_extent, communicator);
+    cell_extent          = Utilities::MPI::max(cell_extent, communicator);
     const double spacing = spacing_in_cells * cell_extent;
     for (unsigned int d = 0; d < dim; ++d)
       lower[d] -= offset * spacing;
@@ -192,10 +190,10 @@ namespace PeriArlequin
     std::array<types::global_dof_index, dim> n_cells, n_nodes;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        n_cells[d] = std::max<types::global_dof_index>(
-          1,
-          static_cast<types::global_dof_index>(
-            std::ceil((upper[d] - lower[d]) / spacing - 1e-9)));
+        n_cells[d] =
+          std::max<types::global_dof_index>(1,
+                                            static_cast<types::global_dof_index>(
+                                              std::ceil((upper[d] - lower[d]) / spacing - 1e-9)));
         n_nodes[d] = n_cells[d] + 1;
       }
 
@@ -209,8 +207,9 @@ namespace PeriArlequin
         for (unsigned int d = 0; d < dim; ++d)
           {
             const double scaled = (x[d] - lower[d]) / spacing;
-            cell[d]  = std::min<types::global_dof_index>(static_cast<types::global_dof_index>(scaled),
-                                                        n_cells[d] - 1);
+            cell[d] =
+              std::min<types::global_dof_index>(static_cast<types::global_dof_index>(scaled),
+                                                n_cells[d] - 1);
             local[d] = scaled - cell[d];
           }
         for (unsigned int corner = 0; corner < (1u << dim); ++corner)
@@ -263,14 +262,13 @@ namespace PeriArlequin
     ghosted.reinit(owned, ghosts, communicator);
     const auto &ghosted_partitioner = *ghosted.get_partitioner();
     for (unsigned int e = 0; e < row_nodes.size(); ++e)
-      entries.push_back({ghosted_partitioner.global_to_local(dim * number(row_nodes[e])),
-                         row_values[e]});
+      entries.push_back(
+        {ghosted_partitioner.global_to_local(dim * number(row_nodes[e])), row_values[e]});
 
     // Colours: nodes of one colour are stride cells apart in some direction, farther than
     // twice the reach of a multiplier (its hat, H, and the FE cells there, h <= H).
-    const unsigned int stride =
-      3 + static_cast<unsigned int>(std::ceil(2. / spacing_in_cells));
-    n_colours = Utilities::pow(stride, dim);
+    const unsigned int stride = 3 + static_cast<unsigned int>(std::ceil(2. / spacing_in_cells));
+    n_colours                 = Utilities::pow(stride, dim);
     for (types::global_dof_index k = first; k < end; ++k)
       {
         types::global_dof_index rest   = nodes[k];

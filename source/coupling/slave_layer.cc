@@ -43,8 +43,10 @@ namespace PeriArlequin
     state.acceleration.update_ghost_values();
     for (unsigned int r = 0; r < particles.size(); ++r)
       {
-        pd_zone->get_state().velocities()[particles[r]]     = interpolation.interpolate(state.velocity, r);
-        pd_zone->get_state().accelerations()[particles[r]] = interpolation.interpolate(state.acceleration, r);
+        pd_zone->get_state().velocities()[particles[r]] =
+          interpolation.interpolate(state.velocity, r);
+        pd_zone->get_state().accelerations()[particles[r]] =
+          interpolation.interpolate(state.acceleration, r);
       }
   }
 

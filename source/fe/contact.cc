@@ -1,8 +1,8 @@
-#include <deal.II/base/mpi.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/contact.h>
 #include <periarlequin/fe/fe_zone.h>
+
+#include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +55,7 @@ namespace PeriArlequin
   {
     point_text       = prm.get("Point");
     const auto point = Utilities::string_to_double(Utilities::split_string_list(point_text));
-    const auto n = Utilities::string_to_double(Utilities::split_string_list(prm.get("Normal")));
+    const auto n     = Utilities::string_to_double(Utilities::split_string_list(prm.get("Normal")));
     for (unsigned int d = 0; d < dim; ++d)
       {
         wall_point[d] = point[d];
@@ -67,7 +67,8 @@ namespace PeriArlequin
                               "a non-zero vector pointing to the body's side of the wall");
     normal /= normal.norm();
     boundary_ids.clear();
-    for (const int id : Utilities::string_to_int(Utilities::split_string_list(prm.get("Boundary ids"))))
+    for (const int id :
+         Utilities::string_to_int(Utilities::split_string_list(prm.get("Boundary ids"))))
       boundary_ids.insert(id);
   }
 
@@ -195,8 +196,7 @@ namespace PeriArlequin
       {
         std::ostringstream where;
         where << "a wall through the point given, with every boundary node at t = 0 on the "
-              << "side the Normal points to; a node lies " << -least
-              << " m beyond the wall";
+              << "side the Normal points to; a node lies " << -least << " m beyond the wall";
         if (gap == least)
           where << " (at " << worst << ")";
         throw_invalid_parameter("Contact/rigid wall/Point", point_text, where.str());
@@ -310,7 +310,7 @@ namespace PeriArlequin
                       const Point<dim>              &p,
                       const Tensor<1, dim>          &outward)
     {
-      std::array<double, 2>          xi = {{0.5, 0.5}};
+      std::array<double, 2>         xi = {{0.5, 0.5}};
       std::array<Tensor<1, dim>, 2> tangent;
       for (unsigned int iteration = 0; iteration < 20; ++iteration)
         {
@@ -325,7 +325,7 @@ namespace PeriArlequin
               tangent[0] = (1 - xi[1]) * (x[1] - x[0]) + xi[1] * (x[3] - x[2]);
               tangent[1] = (1 - xi[0]) * (x[2] - x[0]) + xi[0] * (x[3] - x[1]);
             }
-          const Tensor<1, dim> r = p - position;
+          const Tensor<1, dim>  r    = p - position;
           std::array<double, 2> step = {{0, 0}};
           if (dim == 2)
             step[0] = (r * tangent[0]) / (tangent[0] * tangent[0]);
@@ -360,7 +360,7 @@ namespace PeriArlequin
   {
     this->communicator = zone.get_dof_handler().get_communicator();
     check_linear_elements(zone, "elastic target");
-    const IndexSet    &owned     = zone.get_dof_handler().locally_owned_dofs();
+    const IndexSet    &owned           = zone.get_dof_handler().locally_owned_dofs();
     const unsigned int n_face_vertices = GeometryInfo<dim>::vertices_per_face;
 
     // Every rank's owned striker vertices and owned target faces (each boundary face belongs
@@ -399,7 +399,7 @@ namespace PeriArlequin
 
     // The striker vertices, then the target's vertices, as one sorted list of nodes.
     const unsigned int vertex_width = 2 * dim, face_width = n_face_vertices * vertex_width + dim;
-    const auto read_vertex = [&](const std::vector<double> &data, const unsigned int at) {
+    const auto         read_vertex = [&](const std::vector<double> &data, const unsigned int at) {
       BoundaryVertex<dim> vertex;
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -412,7 +412,7 @@ namespace PeriArlequin
     for (const auto &part : all_striker)
       for (unsigned int at = 0; at + vertex_width <= part.size(); at += vertex_width)
         {
-          const auto vertex     = read_vertex(part, at);
+          const auto vertex       = read_vertex(part, at);
           striker[vertex.dofs[0]] = vertex;
         }
     struct Face
@@ -477,7 +477,8 @@ namespace PeriArlequin
         Pair   pair;
         for (const auto &face : target_faces)
           {
-            const auto [xi, normal] = project_onto_face(face.vertices, nodes[k].position, face.outward);
+            const auto [xi, normal] =
+              project_onto_face(face.vertices, nodes[k].position, face.outward);
             const double tolerance = 1e-10;
             if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
                 (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
@@ -489,7 +490,7 @@ namespace PeriArlequin
             const double distance = (nodes[k].position - foot) * normal;
             if (std::abs(distance) < std::abs(best))
               {
-                best = distance;
+                best         = distance;
                 pair.striker = k;
                 pair.normal  = normal;
                 pair.face_nodes.clear();
@@ -537,8 +538,7 @@ namespace PeriArlequin
           {
             std::ostringstream where;
             where << "boundaries of two bodies that are apart at t = 0: the striker's vertex at "
-                  << nodes[pair.striker].position << " lies " << -gap
-                  << " m inside the target";
+                  << nodes[pair.striker].position << " lies " << -gap << " m inside the target";
             throw_invalid_parameter("Contact/elastic target/Striker boundary ids",
                                     prm_list(striker_ids),
                                     where.str());
@@ -612,12 +612,13 @@ namespace PeriArlequin
     // themselves (kept apart: their difference of positions would lose digits).
     std::vector<Point<dim>>     x = positions(state, dt);
     std::vector<Tensor<1, dim>> shift(nodes.size());
-    std::vector<double>           compliance(pairs.size());
+    std::vector<double>         compliance(pairs.size());
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         compliance[p] = 1. / mass_of(pairs[p].striker);
         for (unsigned int j = 0; j < pairs[p].face_nodes.size(); ++j)
-          compliance[p] += pairs[p].weights[j] * pairs[p].weights[j] / mass_of(pairs[p].face_nodes[j]);
+          compliance[p] +=
+            pairs[p].weights[j] * pairs[p].weights[j] / mass_of(pairs[p].face_nodes[j]);
       }
 
     std::vector<double> lambda(pairs.size(), 0.);
@@ -626,13 +627,14 @@ namespace PeriArlequin
         double largest = 0;
         for (unsigned int p = 0; p < pairs.size(); ++p)
           {
-            const Pair  &pair   = pairs[p];
-            const double change = std::max(-lambda[p], -pair_gap(pair, x) / (dt * dt * compliance[p]));
+            const Pair  &pair = pairs[p];
+            const double change =
+              std::max(-lambda[p], -pair_gap(pair, x) / (dt * dt * compliance[p]));
             if (change == 0)
               continue;
             lambda[p] += change;
             const Tensor<1, dim> impulse = dt * dt * change * pair.normal;
-            const auto move = [&](const unsigned int k, const Tensor<1, dim> &by) {
+            const auto           move    = [&](const unsigned int k, const Tensor<1, dim> &by) {
               x[k] += by;
               shift[k] += by;
             };

@@ -104,8 +104,7 @@ namespace PeriArlequin
         }
       return copies;
     }();
-    std::vector<std::vector<types::global_dof_index>> old_indices(
-      triangulation.n_active_cells());
+    std::vector<std::vector<types::global_dof_index>> old_indices(triangulation.n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 && in_fe_zone(cell))
         {
@@ -146,8 +145,7 @@ namespace PeriArlequin
         carried.push_back(v);
       }
     solution_transfer =
-      std::make_unique<parallel::distributed::SolutionTransfer<dim, VectorType>>(
-        dof_handler);
+      std::make_unique<parallel::distributed::SolutionTransfer<dim, VectorType>>(dof_handler);
     return carried;
   }
 
@@ -297,7 +295,7 @@ namespace PeriArlequin
                               std::vector<unsigned int> &components) const
   {
     std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> located;
-    std::vector<types::global_dof_index>          dof_indices;
+    std::vector<types::global_dof_index>                                   dof_indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
@@ -347,8 +345,8 @@ namespace PeriArlequin
   Tensor<1, dim>
   FEZone<dim>::point_value(const VectorType &ghosted, const PointLocation &location) const
   {
-    const auto                          &[cell, unit] = location;
-    const auto                          &fe           = cell->get_fe();
+    const auto &[cell, unit]                = location;
+    const auto                          &fe = cell->get_fe();
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     cell->get_dof_indices(dof_indices);
     Tensor<1, dim> value;
@@ -397,31 +395,30 @@ namespace PeriArlequin
     if (!data.has_body_force && !data.has_tractions())
       return;
 
-    const UpdateFlags flags = update_values | update_quadrature_points | update_JxW_values;
+    const UpdateFlags     flags = update_values | update_quadrature_points | update_JxW_values;
     hp::FEValues<dim>     hp_fe_values(fe_collection, cell_quadrature, flags);
     hp::FEFaceValues<dim> hp_face_values(fe_collection, face_quadrature, flags);
     Vector<double>        cell_force;
     Vector<double>        load(dim);
     std::vector<types::global_dof_index> dof_indices;
-    auto &body_force = data.body_force;
+    auto                                &body_force = data.body_force;
     body_force.set_time(time);
 
     // Loads are blended like the mass, alpha (the PD zone takes 1 - alpha): the body force
     // and the tractions on faces in an overlap.
-    const auto add_load =
-      [&](const FEValuesBase<dim> &values, Function<dim> &function) {
-        for (const unsigned int q : values.quadrature_point_indices())
-          {
-            const Point<dim> &x = values.quadrature_point(q);
-            function.vector_value(x, load);
-            const double JxW = mass_weight(x) * values.JxW(q);
-            for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
-              {
-                const unsigned int c = values.get_fe().system_to_component_index(i).first;
-                cell_force(i) += load(c) * values.shape_value(i, q) * JxW;
-              }
-          }
-      };
+    const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const Point<dim> &x = values.quadrature_point(q);
+          function.vector_value(x, load);
+          const double JxW = mass_weight(x) * values.JxW(q);
+          for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
+            {
+              const unsigned int c = values.get_fe().system_to_component_index(i).first;
+              cell_force(i) += load(c) * values.shape_value(i, q) * JxW;
+            }
+        }
+    };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -434,8 +431,7 @@ namespace PeriArlequin
             add_load(hp_fe_values.get_present_fe_values(), body_force);
           }
         for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) &&
-              cell->face(f)->boundary_id() < ProblemData<dim>::n_boundaries)
+          if (cell->at_boundary(f) && cell->face(f)->boundary_id() < ProblemData<dim>::n_boundaries)
             {
               const auto &condition = data.boundary_conditions[cell->face(f)->boundary_id()];
               if (condition.type != BoundaryType::traction)
@@ -491,15 +487,14 @@ namespace PeriArlequin
               {
                 const Point<dim>  &unit      = fe.get_unit_support_points()[i];
                 const unsigned int component = fe.system_to_component_index(i).first;
-                if (std::abs(unit[direction] - side) > 1e-12 ||
-                    !condition.components[component] ||
+                if (std::abs(unit[direction] - side) > 1e-12 || !condition.components[component] ||
                     !locally_owned_dofs.is_element(dof_indices[i]))
                   continue;
-                found[dof_indices[i]] = {
-                  static_cast<unsigned int>(locally_owned_dofs.index_within_set(dof_indices[i])),
-                  component,
-                  id,
-                  mapping.transform_unit_to_real_cell(cell, unit)};
+                found[dof_indices[i]] = {static_cast<unsigned int>(
+                                           locally_owned_dofs.index_within_set(dof_indices[i])),
+                                         component,
+                                         id,
+                                         mapping.transform_unit_to_real_cell(cell, unit)};
               }
           }
       }
@@ -558,7 +553,7 @@ namespace PeriArlequin
         z.scale(inverse_sqrt_mass);
         stiffness_matrix.vmult(y, z);
         y.scale(inverse_sqrt_mass);
-        const double rayleigh = x * y;
+        const double rayleigh  = x * y;
         const bool   converged = std::abs(rayleigh - eigenvalue) <= 1e-6 * rayleigh;
         eigenvalue             = rayleigh;
         x                      = y;

@@ -53,14 +53,12 @@ namespace PeriArlequin
     prescribed  = prescribed_dofs(data);
     tracks_work = data.has_body_force || data.has_tractions() ||
                   Utilities::MPI::logical_or(!prescribed.empty(), communicator);
-    work        = 0;
+    work = 0;
 
     const InitialCondition<dim> &initial = *data.initial_condition;
-    interpolate(VectorField<dim>(
-                  [&](const Point<dim> &x) { return initial.displacement(x); }),
+    interpolate(VectorField<dim>([&](const Point<dim> &x) { return initial.displacement(x); }),
                 state.displacement);
-    interpolate(VectorField<dim>(
-                  [&](const Point<dim> &x) { return initial.velocity(x); }),
+    interpolate(VectorField<dim>([&](const Point<dim> &x) { return initial.velocity(x); }),
                 state.velocity);
   }
 
@@ -100,8 +98,8 @@ namespace PeriArlequin
           return function.value(dof.location, dof.component);
         };
         const double before = value(t - dt), now = value(t), after = value(t + dt);
-        prescribed_velocity[k]                         = (after - before) / (2. * dt);
-        prescribed_acceleration[k]                     = (after - 2. * now + before) / (dt * dt);
+        prescribed_velocity[k]                            = (after - before) / (2. * dt);
+        prescribed_acceleration[k]                        = (after - 2. * now + before) / (dt * dt);
         state.displacement.local_element(dof.local_index) = now;
         state.velocity.local_element(dof.local_index)     = prescribed_velocity[k];
         state.acceleration.local_element(dof.local_index) = prescribed_acceleration[k];
@@ -129,15 +127,19 @@ namespace PeriArlequin
          interface_force.local_element(i)) /
         mass.local_element(i);
     if (contact)
-      contact->enforce(
-        time_step, mass, state.displacement, state.velocity, state.acceleration, applied_force);
+      contact->enforce(time_step,
+                       mass,
+                       state.displacement,
+                       state.velocity,
+                       state.acceleration,
+                       applied_force);
     // Prescribed DoFs keep their prescribed acceleration; their applied force takes the
     // support reaction M a + F_int - F_interface.
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
-        const unsigned int i                 = prescribed[k].local_index;
-        state.acceleration.local_element(i)  = prescribed_acceleration[k];
-        applied_force.local_element(i) = mass.local_element(i) * prescribed_acceleration[k] +
+        const unsigned int i                = prescribed[k].local_index;
+        state.acceleration.local_element(i) = prescribed_acceleration[k];
+        applied_force.local_element(i)      = mass.local_element(i) * prescribed_acceleration[k] +
                                          internal_force.local_element(i) -
                                          interface_force.local_element(i);
       }
@@ -169,8 +171,8 @@ namespace PeriArlequin
   {
     double local = 0;
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      local += mass.local_element(i) * state.velocity.local_element(i) *
-               state.velocity.local_element(i);
+      local +=
+        mass.local_element(i) * state.velocity.local_element(i) * state.velocity.local_element(i);
     return 0.5 * Utilities::MPI::sum(local, communicator);
   }
 
@@ -249,27 +251,27 @@ namespace PeriArlequin
   }
 
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
-#define PERIARLEQUIN_INSTANTIATE(dim)                                                        \
-  template void FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);      \
-  template std::string FEZone<dim>::name() const;                                            \
-  template void FEZone<dim>::predict(const double);                                          \
-  template void FEZone<dim>::impose_prescribed_motion(const double);                         \
-  template void FEZone<dim>::compute_accelerations(const double);                            \
-  template void FEZone<dim>::correct(const double);                                          \
-  template void FEZone<dim>::account_work();                                                 \
-  template double FEZone<dim>::kinetic_energy() const;                                       \
-  template double FEZone<dim>::strain_energy() const;                                        \
-  template Tensor<1, dim> FEZone<dim>::linear_momentum() const;                              \
-  template double FEZone<dim>::external_work() const;                                        \
-  template FEZone<dim>::State &FEZone<dim>::get_state();                                     \
-  template const FEZone<dim>::State &FEZone<dim>::get_state() const;                         \
-  template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs() \
-    const;                                                                                   \
-  template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);           \
-  template void FEZone<dim>::set_interface_force(                                            \
-    const std::function<void(FEZone<dim>::VectorType &)> &);                                 \
-  template void FEZone<dim>::set_contact(Contact<dim> *);                                    \
-  template void FEZone<dim>::set_additional_load(                                            \
+#define PERIARLEQUIN_INSTANTIATE(dim)                                                            \
+  template void           FEZone<dim>::initialize_state(const ProblemData<dim> &, const double); \
+  template std::string    FEZone<dim>::name() const;                                             \
+  template void           FEZone<dim>::predict(const double);                                    \
+  template void           FEZone<dim>::impose_prescribed_motion(const double);                   \
+  template void           FEZone<dim>::compute_accelerations(const double);                      \
+  template void           FEZone<dim>::correct(const double);                                    \
+  template void           FEZone<dim>::account_work();                                           \
+  template double         FEZone<dim>::kinetic_energy() const;                                   \
+  template double         FEZone<dim>::strain_energy() const;                                    \
+  template Tensor<1, dim> FEZone<dim>::linear_momentum() const;                                  \
+  template double         FEZone<dim>::external_work() const;                                    \
+  template FEZone<dim>::State                            &FEZone<dim>::get_state();              \
+  template const FEZone<dim>::State                      &FEZone<dim>::get_state() const;        \
+  template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()     \
+    const;                                                                                       \
+  template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);               \
+  template void FEZone<dim>::set_interface_force(                                                \
+    const std::function<void(FEZone<dim>::VectorType &)> &);                                     \
+  template void FEZone<dim>::set_contact(Contact<dim> *);                                        \
+  template void FEZone<dim>::set_additional_load(                                                \
     const std::function<void(double, FEZone<dim>::VectorType &)> &);
 
   PERIARLEQUIN_INSTANTIATE(2)

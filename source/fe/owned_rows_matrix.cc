@@ -34,8 +34,8 @@ namespace PeriArlequin
           {
             const auto col = static_cast<types::global_dof_index>(epetra.GCID64(row_columns[k]));
             AssertThrow(partitioner.in_local_range(col) || partitioner.is_ghost_entry(col),
-                        ExcMessage("OwnedRowsMatrix: column " + std::to_string(col) +
-                                   " of row " + std::to_string(epetra.GRID64(row)) +
+                        ExcMessage("OwnedRowsMatrix: column " + std::to_string(col) + " of row " +
+                                   std::to_string(epetra.GRID64(row)) +
                                    " is neither an owned nor a ghost entry of the vectors' "
                                    "partition."));
             column[row_begin.back() + k] = partitioner.global_to_local(col);

@@ -74,8 +74,8 @@ namespace PeriArlequin
       slot = read_pointer();
     slot = Utilities::MPI::broadcast(communicator, slot, 0);
     AssertThrow(slot != numbers::invalid_unsigned_int,
-                ExcMessage("Invalid input: parameter 'Checkpoint/Resume' = true, but " +
-                           directory + "/" + base_name +
+                ExcMessage("Invalid input: parameter 'Checkpoint/Resume' = true, but " + directory +
+                           "/" + base_name +
                            "_checkpoint.last names no checkpoint; allowed: true only where a "
                            "run with the same 'Output/Directory' and 'Output/Base name' wrote "
                            "a checkpoint (Checkpoint/Interval, Wall time interval or At end)."));
@@ -86,8 +86,9 @@ namespace PeriArlequin
   checkpointed_parameters(const ParameterHandler &prm)
   {
     std::ostringstream text;
-    prm.print_parameters(text, ParameterHandler::OutputStyle(ParameterHandler::PRM |
-                                                             ParameterHandler::Short));
+    prm.print_parameters(text,
+                         ParameterHandler::OutputStyle(ParameterHandler::PRM |
+                                                       ParameterHandler::Short));
     std::vector<std::string> lines, path;
     std::string              line;
     std::istringstream       input(text.str());

@@ -20,14 +20,15 @@ namespace PeriArlequin
       explicit StressPostprocessor(const Parameters::Material &material)
         : lambda(material.effective_lambda(dim))
         , mu(material.shear_modulus())
-        , out_of_plane_factor(dim == 2 && material.planar_model == Parameters::PlanarModel::plane_strain ?
+        , out_of_plane_factor(dim == 2 &&
+                                  material.planar_model == Parameters::PlanarModel::plane_strain ?
                                 material.effective_lambda(dim) :
                                 0.)
       {}
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                            std::vector<Vector<double>> &computed) const override
+                            std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
@@ -48,7 +49,7 @@ namespace PeriArlequin
             if (dim == 2)
               stress_3d[2][2] = out_of_plane_factor * trace(strain);
             const SymmetricTensor<2, 3> s = deviator(stress_3d);
-            computed[q](k) = std::sqrt(1.5 * scalar_product(s, s));
+            computed[q](k)                = std::sqrt(1.5 * scalar_product(s, s));
           }
       }
 
@@ -87,8 +88,8 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEOutput<dim>::write(const unsigned int                                 step,
-                       const double                                       time,
+  FEOutput<dim>::write(const unsigned int                                step,
+                       const double                                      time,
                        const LinearAlgebra::distributed::Vector<double> &displacement,
                        const LinearAlgebra::distributed::Vector<double> &velocity)
   {
@@ -96,7 +97,8 @@ namespace PeriArlequin
     velocity.update_ghost_values();
 
     const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
-      dim, DataComponentInterpretation::component_is_part_of_vector);
+      dim,
+      DataComponentInterpretation::component_is_part_of_vector);
     const StressPostprocessor<dim> stress(fe_zone.get_material());
 
     DataOut<dim> data_out;
@@ -114,8 +116,11 @@ namespace PeriArlequin
     data_out.set_flags(vtk_flags(parameters, time, step));
 
     const MPI_Comm    communicator = fe_zone.get_dof_handler().get_communicator();
-    const std::string name         = data_out.write_vtu_with_pvtu_record(
-      parameters.directory + "/", parameters.base_name + "_fe", step, communicator, 6);
+    const std::string name         = data_out.write_vtu_with_pvtu_record(parameters.directory + "/",
+                                                                 parameters.base_name + "_fe",
+                                                                 step,
+                                                                 communicator,
+                                                                 6);
     series.add(time, name);
     displacement.zero_out_ghost_values();
     velocity.zero_out_ghost_values();

@@ -27,8 +27,8 @@ namespace PeriArlequin
                           const FEZone<dim> *fe_zone,
                           const PDZone<dim> *pd_zone) const
   {
-    const Tensor<1, dim> e = b - a;
-    const auto distance = [&](const Point<dim> &x) {
+    const Tensor<1, dim> e        = b - a;
+    const auto           distance = [&](const Point<dim> &x) {
       const double s = std::clamp((x - a) * e / (e * e), 0., 1.);
       return (x - (a + s * e)).norm();
     };
@@ -57,7 +57,7 @@ namespace PeriArlequin
           if (distance(points[k]) <= tolerance)
             {
               auto &node = nodes[std::vector<double>(points[k].begin_raw(), points[k].end_raw())];
-              node.first[components[k]] = fe_zone->get_state().displacement.local_element(dofs[k]);
+              node.first[components[k]]  = fe_zone->get_state().displacement.local_element(dofs[k]);
               node.second[components[k]] = fe_zone->get_state().velocity.local_element(dofs[k]);
             }
         for (const auto &[x, values] : nodes)
@@ -70,8 +70,7 @@ namespace PeriArlequin
       }
     if (pd_zone)
       for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
-        if (distance(pd_zone->reference_positions()[i]) <=
-            0.5 * lattice_spacing * (1. + 1e-9))
+        if (distance(pd_zone->reference_positions()[i]) <= 0.5 * lattice_spacing * (1. + 1e-9))
           add_row(1,
                   pd_zone->reference_positions()[i],
                   pd_zone->get_state().displacements()[i],
@@ -80,8 +79,8 @@ namespace PeriArlequin
     const auto all = Utilities::MPI::gather(communicator, rows, 0);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
-    const unsigned int                      width = 1 + 3 * dim;
-    std::vector<std::vector<double>>        sorted;
+    const unsigned int               width = 1 + 3 * dim;
+    std::vector<std::vector<double>> sorted;
     for (const auto &part : all)
       for (unsigned int r = 0; r + width <= part.size(); r += width)
         sorted.emplace_back(part.begin() + r, part.begin() + r + width);
@@ -93,10 +92,10 @@ namespace PeriArlequin
                                           right.begin() + 1 + dim);
     });
     std::ostringstream name;
-    name << parameters.directory << "/" << parameters.base_name << "_line_"
-         << std::setw(6) << std::setfill('0') << step << ".csv";
+    name << parameters.directory << "/" << parameters.base_name << "_line_" << std::setw(6)
+         << std::setfill('0') << step << ".csv";
     std::ofstream out(name.str());
-    const char *axes[] = {"x", "y", "z"};
+    const char   *axes[] = {"x", "y", "z"};
     out << "zone";
     for (unsigned int d = 0; d < dim; ++d)
       out << "," << axes[d];

@@ -1,6 +1,6 @@
-#include <deal.II/particles/data_out.h>
-
 #include <periarlequin/io/pd_output.h>
+
+#include <deal.II/particles/data_out.h>
 
 namespace PeriArlequin
 {
@@ -18,7 +18,8 @@ namespace PeriArlequin
   {
     const auto names = pd_zone.store_output_properties();
     std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      names.size(), DataComponentInterpretation::component_is_scalar);
+      names.size(),
+      DataComponentInterpretation::component_is_scalar);
     for (unsigned int k = 0; k < 2 * dim; ++k)
       interpretation[k] = DataComponentInterpretation::component_is_part_of_vector;
 

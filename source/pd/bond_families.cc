@@ -1,11 +1,10 @@
 #include <periarlequin/pd/bond_families.h>
 
-#include <sstream>
-
 #include <deal.II/base/exceptions.h>
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <unordered_map>
 
 namespace PeriArlequin
@@ -32,9 +31,8 @@ namespace PeriArlequin
           entry.length = entry.xi.norm();
           if (zero || entry.length >= horizon + 0.5 * dx)
             return;
-          const double factor = entry.length <= horizon - 0.5 * dx ?
-                                  1. :
-                                  (horizon - entry.length) / dx + 0.5;
+          const double factor =
+            entry.length <= horizon - 0.5 * dx ? 1. : (horizon - entry.length) / dx + 0.5;
           entry.volume = factor * cell_volume;
           stencil.push_back(entry);
           return;
@@ -79,8 +77,8 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
         {
-          const double v         = stencil[stencil_index[n]].volume;
-          const double intact_v  = state[n] != broken ? v : 0.;
+          const double v        = stencil[stencil_index[n]].volume;
+          const double intact_v = state[n] != broken ? v : 0.;
           all[i] += v;
           kept[i] += intact_v;
           const unsigned int j = neighbor(i, n);
@@ -109,12 +107,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  BondFamilies<dim>::build(const Lattice<dim>                           &lattice,
-                           GhostExchange<dim>                           &ghosts,
+  BondFamilies<dim>::build(const Lattice<dim>                            &lattice,
+                           GhostExchange<dim>                            &ghosts,
                            const std::function<bool(const Point<dim> &)> &extent,
-                           const std::vector<PreCrack<dim>>             &pre_cracks,
+                           const std::vector<PreCrack<dim>>              &pre_cracks,
                            const std::function<bool(const Point<dim> &)> &no_fail,
-                           const Kernel                                  kernel)
+                           const Kernel                                   kernel)
   {
     const unsigned int owned = ghosts.n_owned();
     const auto         x     = ghosts.reference_positions();
@@ -128,8 +126,7 @@ namespace PeriArlequin
     if (kernel != Kernel::bond_list)
       {
         layout.place(lattice, ids, *this);
-        stencil_active =
-          kernel == Kernel::stencil || layout.fill_ratio() <= max_stencil_fill_ratio;
+        stencil_active = kernel == Kernel::stencil || layout.fill_ratio() <= max_stencil_fill_ratio;
         if (!stencil_active)
           layout = StencilLayout<dim>();
       }
@@ -160,7 +157,8 @@ namespace PeriArlequin
             {
               AssertThrow(!extent(lattice.position(*other)),
                           ExcMessage("Invalid input: a neighbour within the horizon of the "
-                                     "particle at " + point_text(x[i]) +
+                                     "particle at " +
+                                     point_text(x[i]) +
                                      " m is neither owned nor a ghost particle: one layer "
                                      "of ghost cells does not cover the bonds there "
                                      "(Peridynamics/Horizon factor and Lattice spacing); "
@@ -236,7 +234,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  BondFamilies<dim>::break_bonds(const std::set<IdPair>               &broken_pairs,
+  BondFamilies<dim>::break_bonds(const std::set<IdPair>                &broken_pairs,
                                  ArrayView<const types::particle_index> ids)
   {
     // Per broken pair, the families of its owned ends: a few lookups per pair instead of one

@@ -32,8 +32,8 @@ namespace PeriArlequin
 
   template <int dim>
   bool
-  CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
-                                             ArrayView<const Tensor<1, dim>>  u,
+  CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>              &bonds,
+                                             ArrayView<const Tensor<1, dim>> u,
                                              ArrayView<const double>) const
   {
     bool broke = false;
@@ -43,8 +43,7 @@ namespace PeriArlequin
           if (bonds.state[n] != BondFamilies<dim>::intact)
             continue;
           const auto  &bond = bonds.stencil[bonds.stencil_index[n]];
-          const double e =
-            BondFamilies<dim>::extension(bond, u[bonds.neighbor(i, n)] - u[i]).first;
+          const double e = BondFamilies<dim>::extension(bond, u[bonds.neighbor(i, n)] - u[i]).first;
           if (e > stretch * bond.length)
             {
               bonds.state[n] = BondFamilies<dim>::broken;
@@ -87,9 +86,9 @@ namespace PeriArlequin
 
   template <int dim>
   bool
-  CriticalBondEnergyCriterion<dim>::break_bonds(BondFamilies<dim>               &bonds,
-                                                ArrayView<const Tensor<1, dim>>  u,
-                                                ArrayView<const double>          scalars) const
+  CriticalBondEnergyCriterion<dim>::break_bonds(BondFamilies<dim>              &bonds,
+                                                ArrayView<const Tensor<1, dim>> u,
+                                                ArrayView<const double>         scalars) const
   {
     model->compute_pair_energies(bonds, u, scalars, pair_energy);
     bool broke = false;

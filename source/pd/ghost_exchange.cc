@@ -1,7 +1,7 @@
+#include <periarlequin/pd/ghost_exchange.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-
-#include <periarlequin/pd/ghost_exchange.h>
 
 #include <algorithm>
 #include <iterator>
@@ -38,8 +38,13 @@ namespace PeriArlequin
     // Number the owned particles of all ranks consecutively; the ghosts learn their number
     // through the particle handler, once.
     const types::global_dof_index n_local = n_owned_particles;
-    first_index                            = 0;
-    MPI_Exscan(&n_local, &first_index, 1, Utilities::MPI::mpi_type_id_for_type<types::global_dof_index>, MPI_SUM, communicator);
+    first_index                           = 0;
+    MPI_Exscan(&n_local,
+               &first_index,
+               1,
+               Utilities::MPI::mpi_type_id_for_type<types::global_dof_index>,
+               MPI_SUM,
+               communicator);
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       first_index = 0;
     n_global = Utilities::MPI::sum(n_local, communicator);
@@ -57,7 +62,8 @@ namespace PeriArlequin
     };
     std::vector<Ghost> ghosts;
     ghosts.reserve(n_held - n_owned_particles);
-    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost(); ++ghost)
+    for (auto ghost = particle_handler.begin_ghost(); ghost != particle_handler.end_ghost();
+         ++ghost)
       ghosts.push_back({static_cast<types::global_dof_index>(ghost->get_properties()[0]),
                         ghost->get_id(),
                         ghost->get_location()});
@@ -146,12 +152,12 @@ namespace PeriArlequin
     const std::size_t       n_owned_values = n_per_particle * std::size_t(n_owned_particles);
     const ArrayView<double> ghost_values(values.data() + n_owned_values,
                                          values.size() - n_owned_values);
-    pattern.export_to_ghosted_array_start<double>(
-      0,
-      ArrayView<const double>(values.data(), n_owned_values),
-      make_array_view(send_buffer),
-      ghost_values,
-      requests);
+    pattern.export_to_ghosted_array_start<double>(0,
+                                                  ArrayView<const double>(values.data(),
+                                                                          n_owned_values),
+                                                  make_array_view(send_buffer),
+                                                  ghost_values,
+                                                  requests);
     pattern.export_to_ghosted_array_finish(ghost_values, requests);
   }
 

@@ -10,8 +10,8 @@ namespace PeriArlequin
     , dx(spacing)
   {
     for (unsigned int d = 0; d < dim; ++d)
-      n_sites[d] = static_cast<unsigned int>(
-        std::floor((upper_corner[d] - lower_corner[d]) / dx + 1e-8));
+      n_sites[d] =
+        static_cast<unsigned int>(std::floor((upper_corner[d] - lower_corner[d]) / dx + 1e-8));
   }
 
   template <int dim>

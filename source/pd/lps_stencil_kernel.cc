@@ -28,10 +28,10 @@ namespace PeriArlequin
     template <int dim>
     struct Block
     {
-      double        xi[dim];
-      double        length, volume;
-      std::size_t   first, delta;
-      unsigned int  n;
+      double              xi[dim];
+      double              length, volume;
+      std::size_t         first, delta;
+      unsigned int        n;
       const std::uint8_t *mask;
       /**
        * Whether the pass may add to both ends inside its vector loop: the ends are at least
@@ -109,7 +109,8 @@ namespace PeriArlequin
       // Component by component, without a loop: a loop here keeps the compiler from
       // vectorising over q.
       double     xi_eta = 0, eta_eta = 0, length_squared = 0;
-      const auto add    = [&](const unsigned int d) __attribute__((always_inline)) {
+      const auto add = [&](const unsigned int d) __attribute__((always_inline))
+      {
         const double eta = uj[d][q] - ui[d][q];
         xi_eta += xi[d] * eta;
         eta_eta += eta * eta;
@@ -127,8 +128,10 @@ namespace PeriArlequin
     /** The pointers to the @p dim components of @p values (n_slots each) at slot @p first. */
     template <int dim>
     inline __attribute__((always_inline)) void
-    component_pointers(const double *values, const std::size_t n_slots, const std::size_t first,
-                       const double **pointers)
+    component_pointers(const double     *values,
+                       const std::size_t n_slots,
+                       const std::size_t first,
+                       const double    **pointers)
     {
       for (unsigned int d = 0; d < dim; ++d)
         pointers[d] = values + d * n_slots + first;
@@ -149,8 +152,11 @@ namespace PeriArlequin
      * in order, whatever the chunk boundaries (they depend on where a rank's run starts).
      */
     inline __attribute__((always_inline)) void
-    add_to_ends(double *lower_end, double *upper_end, const double *values,
-                const double upper_sign, const int n)
+    add_to_ends(double       *lower_end,
+                double       *upper_end,
+                const double *values,
+                const double  upper_sign,
+                const int     n)
     {
 #pragma omp simd
       for (int q = 0; q < n; ++q)
@@ -165,17 +171,21 @@ namespace PeriArlequin
     inline __attribute__((always_inline)) void
     intact_volume_pass_impl(const StencilLayout<dim>                                    &layout,
                             const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                            double         *volume,
-                            const RunRange &range)
+                            double                                                      *volume,
+                            const RunRange                                              &range)
     {
       double *const chunk = range.chunk;
-      for_each_block(layout, stencil, range, [&](const Block<dim> &block) __attribute__((always_inline)) {
-        const double weighted = block.length * block.length * block.volume;
+      for_each_block(
+        layout,
+        stencil,
+        range,
+        [&](const Block<dim> &block) __attribute__((always_inline)) {
+          const double weighted = block.length * block.length * block.volume;
 #pragma omp simd
-        for (unsigned int q = 0; q < block.n; ++q)
-          chunk[q] = block.mask[q] ? weighted : 0.;
-        add_to_ends(volume + block.first, volume + block.first + block.delta, chunk, 1., block.n);
-      });
+          for (unsigned int q = 0; q < block.n; ++q)
+            chunk[q] = block.mask[q] ? weighted : 0.;
+          add_to_ends(volume + block.first, volume + block.first + block.delta, chunk, 1., block.n);
+        });
     }
 
     /** Sum of x e V v over the intact bonds of every slot. */
@@ -183,44 +193,49 @@ namespace PeriArlequin
     inline __attribute__((always_inline)) void
     moment_pass_impl(const StencilLayout<dim>                                    &layout,
                      const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                     const double   *u,
-                     double         *moment,
-                     const RunRange &range)
+                     const double                                                *u,
+                     double                                                      *moment,
+                     const RunRange                                              &range)
     {
       const std::size_t n_slots = layout.n_slots();
       double *const     chunk   = range.chunk;
-      for_each_block(layout, stencil, range, [=](const Block<dim> &block) __attribute__((always_inline)) {
-        const Block<dim>    b    = block;
-        const std::uint8_t *mask = b.mask;
-        const double       *ui[dim], *uj[dim];
-        component_pointers<dim>(u, n_slots, b.first, ui);
-        component_pointers<dim>(u, n_slots, b.first + b.delta, uj);
-        const int n = b.n;
-        double *__restrict values = chunk, *__restrict intact = chunk + chunk_length;
-        unpack_mask(mask, n, intact);
-        const auto term = [&](const int q) __attribute__((always_inline)) {
-          double       numerator;
-          const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
-          const double e = numerator / (l + b.length);
-          return intact[q] != 0. ? b.length * e * b.volume : 0.;
-        };
-        double *moment_i = moment + b.first, *moment_j = moment_i + b.delta;
-        if (b.direct)
+      for_each_block(
+        layout,
+        stencil,
+        range,
+        [=](const Block<dim> &block) __attribute__((always_inline)) {
+          const Block<dim>    b    = block;
+          const std::uint8_t *mask = b.mask;
+          const double       *ui[dim], *uj[dim];
+          component_pointers<dim>(u, n_slots, b.first, ui);
+          component_pointers<dim>(u, n_slots, b.first + b.delta, uj);
+          const int n               = b.n;
+          double *__restrict values = chunk, *__restrict intact = chunk + chunk_length;
+          unpack_mask(mask, n, intact);
+          const auto term = [&](const int q) __attribute__((always_inline))
           {
+            double       numerator;
+            const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
+            const double e = numerator / (l + b.length);
+            return intact[q] != 0. ? b.length * e * b.volume : 0.;
+          };
+          double *moment_i = moment + b.first, *moment_j = moment_i + b.delta;
+          if (b.direct)
+            {
 #pragma omp simd safelen(simd_distance)
-            for (int q = 0; q < n; ++q)
-              {
-                const double m = term(q);
-                moment_i[q] += m;
-                moment_j[q] += m;
-              }
-            return;
-          }
-#pragma omp simd
-        for (int q = 0; q < n; ++q)
-          values[q] = term(q);
-        add_to_ends(moment_i, moment_j, values, 1., n);
-      });
+              for (int q = 0; q < n; ++q)
+                {
+                  const double m = term(q);
+                  moment_i[q] += m;
+                  moment_j[q] += m;
+                }
+              return;
+            }
+#pragma omp      simd
+          for (int q = 0; q < n; ++q)
+            values[q] = term(q);
+          add_to_ends(moment_i, moment_j, values, 1., n);
+        });
     }
 
     /**
@@ -232,31 +247,40 @@ namespace PeriArlequin
     inline __attribute__((always_inline)) void
     force_pass_impl(const StencilLayout<dim>                                    &layout,
                     const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
-                    const double *u,
-                    const double *coefficients,
-                    double         *force,
-                    double         *deviatoric,
-                    const RunRange &range)
+                    const double                                                *u,
+                    const double                                                *coefficients,
+                    double                                                      *force,
+                    double                                                      *deviatoric,
+                    const RunRange                                              &range)
     {
       const std::size_t n_slots = layout.n_slots();
       double *const     chunk   = range.chunk;
       const double     *beta = coefficients, *a = coefficients + n_slots,
                    *theta_3 = coefficients + 2 * n_slots;
-      for_each_block(layout, stencil, range, [=](const Block<dim> &block) __attribute__((always_inline)) {
-        const Block<dim>    b    = block;
-        const std::size_t   j    = b.delta;
-        const std::uint8_t *mask = b.mask;
-        const double       *ui[dim], *uj[dim];
-        component_pointers<dim>(u, n_slots, b.first, ui);
-        component_pointers<dim>(u, n_slots, b.first + j, uj);
-        const double *beta_i = beta + b.first, *beta_j = beta_i + j, *a_i = a + b.first,
-                     *a_j = a_i + j, *theta_3_i = theta_3 + b.first, *theta_3_j = theta_3_i + j;
-        const int n = b.n;
-        double *__restrict values = chunk, *__restrict intact = chunk + (dim + 2) * chunk_length;
-        unpack_mask(mask, n, intact);
-        // Pair force components p and both ends' deviatoric terms of bond q.
-        const auto terms = [&](const int q, double &p_0, double &p_1, double &p_2,
-                               double &dev_i, double &dev_j) __attribute__((always_inline)) {
+      for_each_block(
+        layout,
+        stencil,
+        range,
+        [=](const Block<dim> &block) __attribute__((always_inline)) {
+          const Block<dim>    b    = block;
+          const std::size_t   j    = b.delta;
+          const std::uint8_t *mask = b.mask;
+          const double       *ui[dim], *uj[dim];
+          component_pointers<dim>(u, n_slots, b.first, ui);
+          component_pointers<dim>(u, n_slots, b.first + j, uj);
+          const double *beta_i = beta + b.first, *beta_j = beta_i + j, *a_i = a + b.first,
+                       *a_j = a_i + j, *theta_3_i = theta_3 + b.first, *theta_3_j = theta_3_i + j;
+          const int n               = b.n;
+          double *__restrict values = chunk, *__restrict intact = chunk + (dim + 2) * chunk_length;
+          unpack_mask(mask, n, intact);
+          // Pair force components p and both ends' deviatoric terms of bond q.
+          const auto terms = [&](const int q,
+                                 double   &p_0,
+                                 double   &p_1,
+                                 double   &p_2,
+                                 double   &dev_i,
+                                 double   &dev_j) __attribute__((always_inline))
+          {
             // One division for the two quotients e = numerator / (l + |xi|) and 1 / l.
             double       numerator;
             const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
@@ -273,89 +297,89 @@ namespace PeriArlequin
             dev_i             = intact[q] != 0. ? ed_i * ed_i * b.volume : 0.;
             dev_j             = intact[q] != 0. ? ed_j * ed_j * b.volume : 0.;
           };
-        double *f_i[dim], *f_j[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            f_i[d] = force + d * n_slots + b.first;
-            f_j[d] = f_i[d] + j;
-          }
-        double *deviatoric_i = deviatoric + b.first, *deviatoric_j = deviatoric_i + j;
-        if (b.direct)
-          {
+          double *f_i[dim], *f_j[dim];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              f_i[d] = force + d * n_slots + b.first;
+              f_j[d] = f_i[d] + j;
+            }
+          double *deviatoric_i = deviatoric + b.first, *deviatoric_j = deviatoric_i + j;
+          if (b.direct)
+            {
 #pragma omp simd safelen(simd_distance)
-            for (int q = 0; q < n; ++q)
-              {
-                double p_0, p_1, p_2 = 0, dev_i, dev_j;
-                terms(q, p_0, p_1, p_2, dev_i, dev_j);
-                f_i[0][q] += p_0;
-                f_j[0][q] -= p_0;
-                f_i[1][q] += p_1;
-                f_j[1][q] -= p_1;
-                if constexpr (dim == 3)
-                  {
-                    f_i[2][q] += p_2;
-                    f_j[2][q] -= p_2;
-                  }
-                deviatoric_i[q] += dev_i;
-                deviatoric_j[q] += dev_j;
-              }
-            return;
-          }
+              for (int q = 0; q < n; ++q)
+                {
+                  double p_0, p_1, p_2 = 0, dev_i, dev_j;
+                  terms(q, p_0, p_1, p_2, dev_i, dev_j);
+                  f_i[0][q] += p_0;
+                  f_j[0][q] -= p_0;
+                  f_i[1][q] += p_1;
+                  f_j[1][q] -= p_1;
+                  if constexpr (dim == 3)
+                    {
+                      f_i[2][q] += p_2;
+                      f_j[2][q] -= p_2;
+                    }
+                  deviatoric_i[q] += dev_i;
+                  deviatoric_j[q] += dev_j;
+                }
+              return;
+            }
+#pragma omp      simd
+          for (int q = 0; q < n; ++q)
+            {
+                   double p_2 = 0;
+                   terms(q,
+                    values[q],
+                    values[chunk_length + q],
+                    p_2,
+                    values[dim * chunk_length + q],
+                    values[(dim + 1) * chunk_length + q]);
+                   if constexpr (dim == 3)
+                values[2 * chunk_length + q] = p_2;
+            }
+               for (unsigned int d = 0; d < dim; ++d)
+            add_to_ends(f_i[d], f_j[d], values + d * chunk_length, -1., n);
+          const double *values_i = values + dim * chunk_length,
+                       *values_j = values + (dim + 1) * chunk_length;
 #pragma omp simd
-        for (int q = 0; q < n; ++q)
-          {
-            double p_2 = 0;
-            terms(q,
-                  values[q],
-                  values[chunk_length + q],
-                  p_2,
-                  values[dim * chunk_length + q],
-                  values[(dim + 1) * chunk_length + q]);
-            if constexpr (dim == 3)
-              values[2 * chunk_length + q] = p_2;
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          add_to_ends(f_i[d], f_j[d], values + d * chunk_length, -1., n);
-        const double *values_i = values + dim * chunk_length,
-                     *values_j = values + (dim + 1) * chunk_length;
+          for (int q = 0; q < n; ++q)
+            deviatoric_j[q] += values_j[q];
 #pragma omp simd
-        for (int q = 0; q < n; ++q)
-          deviatoric_j[q] += values_j[q];
-#pragma omp simd
-        for (int q = 0; q < n; ++q)
-          deviatoric_i[q] += values_i[q];
-      });
+          for (int q = 0; q < n; ++q)
+            deviatoric_i[q] += values_i[q];
+        });
     }
 
     // One instance per dimension and instruction set.
-#define PERIARLEQUIN_STENCIL_PASSES(dim)                                                     \
-  PERIARLEQUIN_KERNEL_CLONES void intact_volume_pass(                                        \
-    const StencilLayout<dim>                                    &layout,                     \
-    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
-    double                                                      *volume,                     \
-    const RunRange                                              &range)                      \
-  {                                                                                          \
-    intact_volume_pass_impl<dim>(layout, stencil, volume, range);                            \
-  }                                                                                          \
-  PERIARLEQUIN_KERNEL_CLONES void moment_pass(                                               \
-    const StencilLayout<dim>                                    &layout,                     \
-    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
-    const double                                                *u,                          \
-    double                                                      *moment,                     \
-    const RunRange                                              &range)                      \
-  {                                                                                          \
-    moment_pass_impl<dim>(layout, stencil, u, moment, range);                                \
-  }                                                                                          \
-  PERIARLEQUIN_KERNEL_CLONES void force_pass(                                                \
-    const StencilLayout<dim>                                    &layout,                     \
-    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,                    \
-    const double                                                *u,                          \
-    const double                                                *coefficients,               \
-    double                                                      *force,                      \
-    double                                                      *deviatoric,                 \
-    const RunRange                                              &range)                      \
-  {                                                                                          \
-    force_pass_impl<dim>(layout, stencil, u, coefficients, force, deviatoric, range);        \
+#define PERIARLEQUIN_STENCIL_PASSES(dim)                                              \
+  PERIARLEQUIN_KERNEL_CLONES void intact_volume_pass(                                 \
+    const StencilLayout<dim>                                    &layout,              \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,             \
+    double                                                      *volume,              \
+    const RunRange                                              &range)               \
+  {                                                                                   \
+    intact_volume_pass_impl<dim>(layout, stencil, volume, range);                     \
+  }                                                                                   \
+  PERIARLEQUIN_KERNEL_CLONES void moment_pass(                                        \
+    const StencilLayout<dim>                                    &layout,              \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,             \
+    const double                                                *u,                   \
+    double                                                      *moment,              \
+    const RunRange                                              &range)               \
+  {                                                                                   \
+    moment_pass_impl<dim>(layout, stencil, u, moment, range);                         \
+  }                                                                                   \
+  PERIARLEQUIN_KERNEL_CLONES void force_pass(                                         \
+    const StencilLayout<dim>                                    &layout,              \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,             \
+    const double                                                *u,                   \
+    const double                                                *coefficients,        \
+    double                                                      *force,               \
+    double                                                      *deviatoric,          \
+    const RunRange                                              &range)               \
+  {                                                                                   \
+    force_pass_impl<dim>(layout, stencil, u, coefficients, force, deviatoric, range); \
   }
     PERIARLEQUIN_STENCIL_PASSES(2)
     PERIARLEQUIN_STENCIL_PASSES(3)
@@ -408,9 +432,9 @@ namespace PeriArlequin
   template <int dim>
   void
   LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(
-    const BondFamilies<dim>         &bonds,
+    const BondFamilies<dim>        &bonds,
     ArrayView<const Tensor<1, dim>> u,
-    std::vector<double>             &scalars) const
+    std::vector<double>            &scalars) const
   {
     const auto       &layout  = bonds.stencil_layout();
     const std::size_t n_slots = layout.n_slots();
@@ -440,13 +464,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  LinearPeridynamicSolid<dim>::compute_forces_on_stencil(
-    const BondFamilies<dim>         &bonds,
-    ArrayView<const Tensor<1, dim>> u,
-    const std::vector<double>       &scalars,
-    const std::vector<double>       &state_weight,
-    std::vector<Tensor<1, dim>>     &force_density,
-    std::vector<double>             &energy_density) const
+  LinearPeridynamicSolid<dim>::compute_forces_on_stencil(const BondFamilies<dim>        &bonds,
+                                                         ArrayView<const Tensor<1, dim>> u,
+                                                         const std::vector<double>      &scalars,
+                                                         const std::vector<double>   &state_weight,
+                                                         std::vector<Tensor<1, dim>> &force_density,
+                                                         std::vector<double> &energy_density) const
   {
     const auto       &layout  = bonds.stencil_layout();
     const std::size_t n_slots = layout.n_slots();
@@ -483,17 +506,20 @@ namespace PeriArlequin
   }
 
   // The class is instantiated in material_model.cc; the members defined here, here.
-#define PERIARLEQUIN_INSTANTIATE(dim)                                                        \
-  template void LinearPeridynamicSolid<dim>::gather_displacements(                           \
-    const StencilLayout<dim> &, ArrayView<const Tensor<1, dim>>) const;                      \
-  template void LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(            \
-    const BondFamilies<dim> &, ArrayView<const Tensor<1, dim>>, std::vector<double> &) const; \
-  template void LinearPeridynamicSolid<dim>::compute_forces_on_stencil(                      \
-    const BondFamilies<dim> &,                                                               \
-    ArrayView<const Tensor<1, dim>>,                                                         \
-    const std::vector<double> &,                                                             \
-    const std::vector<double> &,                                                             \
-    std::vector<Tensor<1, dim>> &,                                                           \
+#define PERIARLEQUIN_INSTANTIATE(dim)                                                              \
+  template void LinearPeridynamicSolid<dim>::gather_displacements(const StencilLayout<dim> &,      \
+                                                                  ArrayView<const Tensor<1, dim>>) \
+    const;                                                                                         \
+  template void LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(                  \
+    const BondFamilies<dim> &,                                                                     \
+    ArrayView<const Tensor<1, dim>>,                                                               \
+    std::vector<double> &) const;                                                                  \
+  template void LinearPeridynamicSolid<dim>::compute_forces_on_stencil(                            \
+    const BondFamilies<dim> &,                                                                     \
+    ArrayView<const Tensor<1, dim>>,                                                               \
+    const std::vector<double> &,                                                                   \
+    const std::vector<double> &,                                                                   \
+    std::vector<Tensor<1, dim>> &,                                                                 \
     std::vector<double> &) const;
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

@@ -19,8 +19,8 @@ namespace PeriArlequin
                                           const BondFamilies<dim> &)
   {
     const double nu = material.poissons_ratio, mu = material.shear_modulus();
-    youngs_modulus  = material.youngs_modulus;
-    bulk_modulus    = material.bulk_modulus();
+    youngs_modulus = material.youngs_modulus;
+    bulk_modulus   = material.bulk_modulus();
     if (dim == 3)
       {
         c = 3.;
@@ -72,10 +72,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  LinearPeridynamicSolid<dim>::compute_particle_scalars(
-    const BondFamilies<dim>          &bonds,
-    ArrayView<const Tensor<1, dim>>  u,
-    std::vector<double>               &scalars) const
+  LinearPeridynamicSolid<dim>::compute_particle_scalars(const BondFamilies<dim>        &bonds,
+                                                        ArrayView<const Tensor<1, dim>> u,
+                                                        std::vector<double> &scalars) const
   {
     if (bonds.uses_stencil())
       return compute_particle_scalars_on_stencil(bonds, u, scalars);
@@ -135,11 +134,11 @@ namespace PeriArlequin
     for_each_subrange(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int j = first; j < end; ++j)
         {
-          const double weight = state_weight.empty() ? 1. : state_weight[j];
-          const double q      = bonds.weighted_volume[j];
-          const double beta   = b / q;
-          const double theta  = scalars[2 * j];
-          const double alpha  = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
+          const double weight     = state_weight.empty() ? 1. : state_weight[j];
+          const double q          = bonds.weighted_volume[j];
+          const double beta       = b / q;
+          const double theta      = scalars[2 * j];
+          const double alpha      = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
           coefficients[3 * j]     = weight * beta;
           coefficients[3 * j + 1] = weight * (alpha - beta * theta / 3.);
           coefficients[3 * j + 2] = theta / 3.;
@@ -149,9 +148,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  LinearPeridynamicSolid<dim>::compute_pair_energies(const BondFamilies<dim>          &bonds,
-                                                     ArrayView<const Tensor<1, dim>>  u,
-                                                     ArrayView<const double>           scalars,
+  LinearPeridynamicSolid<dim>::compute_pair_energies(const BondFamilies<dim>        &bonds,
+                                                     ArrayView<const Tensor<1, dim>> u,
+                                                     ArrayView<const double>         scalars,
                                                      std::vector<double> &pair_energy) const
   {
     compute_coefficients(bonds, scalars, {});
@@ -164,22 +163,27 @@ namespace PeriArlequin
             const auto        &bond = bonds.stencil[bonds.stencil_index[n]];
             const double       e    = BondFamilies<dim>::extension(bond, u[j] - u[i]).first;
             const double       t    = (coefficients[3 * i] + coefficients[3 * j]) * e +
-                               (coefficients[3 * i + 1] + coefficients[3 * j + 1]) * bond.length;
+                             (coefficients[3 * i + 1] + coefficients[3 * j + 1]) * bond.length;
             pair_energy[n] = 0.5 * t * e;
           }
   }
 
   template <int dim>
   void
-  LinearPeridynamicSolid<dim>::compute_forces(const BondFamilies<dim>          &bonds,
-                                              ArrayView<const Tensor<1, dim>>  u,
-                                              const std::vector<double>         &scalars,
-                                              const std::vector<double>         &state_weight,
-                                              std::vector<Tensor<1, dim>>       &force_density,
-                                              std::vector<double> &energy_density) const
+  LinearPeridynamicSolid<dim>::compute_forces(const BondFamilies<dim>        &bonds,
+                                              ArrayView<const Tensor<1, dim>> u,
+                                              const std::vector<double>      &scalars,
+                                              const std::vector<double>      &state_weight,
+                                              std::vector<Tensor<1, dim>>    &force_density,
+                                              std::vector<double>            &energy_density) const
   {
     if (bonds.uses_stencil())
-      return compute_forces_on_stencil(bonds, u, scalars, state_weight, force_density, energy_density);
+      return compute_forces_on_stencil(bonds,
+                                       u,
+                                       scalars,
+                                       state_weight,
+                                       force_density,
+                                       energy_density);
     // The state weights scale each particle's force state, as they scale its energy.
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     std::fill(force_density.begin(), force_density.begin() + bonds.n_owned, Tensor<1, dim>());
@@ -194,14 +198,14 @@ namespace PeriArlequin
           {
             if (bonds.state[n] == BondFamilies<dim>::broken)
               continue;
-            const unsigned int   j      = bonds.neighbor(i, n);
-            const double *const  cj     = &coefficients[3 * j];
-            const auto          &bond   = bonds.stencil[bonds.stencil_index[n]];
-            const Tensor<1, dim> eta    = u[j] - u[i];
-            const auto [e, length]      = BondFamilies<dim>::extension(bond, eta);
-            const double         t      = (ci[0] + cj[0]) * e + (ci[1] + cj[1]) * bond.length;
-            const Tensor<1, dim> pair   = (t * bond.volume / length) * (bond.xi + eta);
-            const double         ed_i   = e - ci[2] * bond.length;
+            const unsigned int   j    = bonds.neighbor(i, n);
+            const double *const  cj   = &coefficients[3 * j];
+            const auto          &bond = bonds.stencil[bonds.stencil_index[n]];
+            const Tensor<1, dim> eta  = u[j] - u[i];
+            const auto [e, length]    = BondFamilies<dim>::extension(bond, eta);
+            const double         t    = (ci[0] + cj[0]) * e + (ci[1] + cj[1]) * bond.length;
+            const Tensor<1, dim> pair = (t * bond.volume / length) * (bond.xi + eta);
+            const double         ed_i = e - ci[2] * bond.length;
             force_i += pair;
             deviatoric_i += ed_i * ed_i * bond.volume;
             if (j < bonds.n_owned)
@@ -217,8 +221,8 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       {
         const double theta = scalars[2 * i];
-        energy_density[i]  = 0.5 * state_weight[i] * k * theta * theta +
-                            0.5 * coefficients[3 * i] * energy_density[i];
+        energy_density[i] =
+          0.5 * state_weight[i] * k * theta * theta + 0.5 * coefficients[3 * i] * energy_density[i];
       }
   }
 

@@ -14,6 +14,13 @@ namespace PeriArlequin
     }
 
     template <int dim>
+    double
+    Peridynamics<dim>::coupled_particle_reach() const
+    {
+      return 2. * (horizon() + 0.5 * lattice_spacing) * (1. + 1e-10);
+    }
+
+    template <int dim>
     void
     PrescribedParticleRegion<dim>::entries(ParameterEntries &entries)
     {
@@ -144,9 +151,7 @@ namespace PeriArlequin
       if (region.empty())
         return;
       if (!(lattice_spacing > 0))
-        throw_invalid_parameter("Peridynamics/Lattice spacing",
-                                lattice_spacing,
-                                "a value > 0 [m]");
+        throw_invalid_parameter("Peridynamics/Lattice spacing", lattice_spacing, "a value > 0 [m]");
       if (!(horizon_factor >= 1))
         throw_invalid_parameter("Peridynamics/Horizon factor",
                                 horizon_factor,

@@ -31,8 +31,12 @@ namespace PeriArlequin
   {
     if (!scalars_current)
       update_model_scalars();
-    model->compute_forces(
-      bonds, state.displacements(), model_scalars, state_weight, force_density, energy_density);
+    model->compute_forces(bonds,
+                          state.displacements(),
+                          model_scalars,
+                          state_weight,
+                          force_density,
+                          energy_density);
   }
 
   template <int dim>
@@ -109,17 +113,17 @@ namespace PeriArlequin
           fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
         if (broke)
           bonds.states_changed();
-        scalars_current = fracture->needs_particle_scalars() &&
-                          !Utilities::MPI::logical_or(broke, communicator);
+        scalars_current =
+          fracture->needs_particle_scalars() && !Utilities::MPI::logical_or(broke, communicator);
       }
     if (checks_overlap)
       check_damage_near_overlap(time);
     evaluate_model(scalars_current);
 
     const double rho = material.density, volume = particle_volume();
-    const auto   a   = state.accelerations();
-    const bool   loaded = problem_data->has_body_force || problem_data->has_tractions();
-    const auto accelerate = [&](const unsigned int first, const unsigned int end) {
+    const auto   a          = state.accelerations();
+    const bool   loaded     = problem_data->has_body_force || problem_data->has_tractions();
+    const auto   accelerate = [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
           // A slave's acceleration is that of the FE field, set by the coupling, and its
@@ -158,7 +162,8 @@ namespace PeriArlequin
     const auto u         = state.displacements();
     double     increment = 0;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      increment += (previous_applied_force[i] + applied_force[i]) * (u[i] - previous_displacement[i]);
+      increment +=
+        (previous_applied_force[i] + applied_force[i]) * (u[i] - previous_displacement[i]);
     work += 0.5 * increment;
   }
 
@@ -197,10 +202,10 @@ namespace PeriArlequin
   double
   PDZone<dim>::estimate_stable_time_step(const unsigned int max_iterations)
   {
-    const unsigned int          n_owned = ghosts.n_owned();
-    const auto                  u       = state.displacements();
+    const unsigned int                n_owned = ghosts.n_owned();
+    const auto                        u       = state.displacements();
     const std::vector<Tensor<1, dim>> saved(u.begin(), u.end());
-    std::vector<Tensor<1, dim>> x(n_owned);
+    std::vector<Tensor<1, dim>>       x(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int d = 0; d < dim; ++d)
         x[i][d] = hashed_value(ghosts.ids()[i], d);
@@ -215,7 +220,7 @@ namespace PeriArlequin
     double eigenvalue = 0;
     for (unsigned int it = 0; it < max_iterations; ++it)
       {
-        const double scale = 1. / norm(x);
+        const double scale     = 1. / norm(x);
         double       max_entry = 0;
         for (unsigned int i = 0; i < n_owned; ++i)
           {
@@ -223,18 +228,17 @@ namespace PeriArlequin
             for (unsigned int d = 0; d < dim; ++d)
               max_entry = std::max(max_entry, std::abs(x[i][d]));
           }
-        const double eps = 1e-8 * parameters.lattice_spacing /
-                           Utilities::MPI::max(max_entry, communicator);
+        const double eps =
+          1e-8 * parameters.lattice_spacing / Utilities::MPI::max(max_entry, communicator);
         for (unsigned int i = 0; i < n_owned; ++i)
           u[i] = slave[i] ? Tensor<1, dim>() : eps * x[i];
         compute_internal_forces();
         double rayleigh = 0;
         for (unsigned int i = 0; i < n_owned; ++i)
           {
-            const Tensor<1, dim> y =
-              slave[i] ? Tensor<1, dim>() :
-                            -(force_weight[i] * force_density[i]) /
-                              (material.density * mass_weight[i] * eps);
+            const Tensor<1, dim> y = slave[i] ? Tensor<1, dim>() :
+                                                -(force_weight[i] * force_density[i]) /
+                                                  (material.density * mass_weight[i] * eps);
             rayleigh += x[i] * y;
             x[i] = y;
           }

@@ -66,9 +66,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PrescribedParticles<dim>::impose(const double        time,
-                                   const double        dt,
-                                   ParticleState<dim> &state)
+  PrescribedParticles<dim>::impose(const double time, const double dt, ParticleState<dim> &state)
   {
     Vector<double> before(dim), now(dim), after(dim);
     for (auto &p : particles)
@@ -93,7 +91,7 @@ namespace PeriArlequin
             else
               {
                 state.displacements()[p.local_index][d] = now(d);
-                p.velocity[d]     = (after(d) - before(d)) / (2. * dt);
+                p.velocity[d]                           = (after(d) - before(d)) / (2. * dt);
                 p.acceleration[d] = (after(d) - 2. * now(d) + before(d)) / (dt * dt);
               }
           }

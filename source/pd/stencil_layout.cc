@@ -12,17 +12,18 @@ namespace PeriArlequin
 {
   namespace
   {
-    /** Versions are unique over all layouts, so a cache keyed by one never mistakes a new layout. */
+    /** Versions are unique over all layouts, so a cache keyed by one never mistakes a new layout.
+     */
     std::atomic<unsigned int> next_mask_version{1};
   } // namespace
 
   template <int dim>
   void
-  StencilLayout<dim>::place(const Lattice<dim>                     &lattice,
+  StencilLayout<dim>::place(const Lattice<dim>                    &lattice,
                             ArrayView<const types::particle_index> ids,
-                            const BondFamilies<dim>                &bonds)
+                            const BondFamilies<dim>               &bonds)
   {
-    n_held = ids.size();
+    n_held    = ids.size();
     int reach = 0;
     for (const auto &entry : bonds.stencil)
       for (unsigned int d = 0; d < dim; ++d)
@@ -64,8 +65,7 @@ namespace PeriArlequin
     // Runs: the held slots of each lattice line, in the order of the lines.
     const std::size_t line_length = n_held > 0 ? stride[1] : 1;
     run_of_line.assign(n_box_slots / line_length, -1);
-    std::vector<std::pair<std::size_t, std::size_t>> extent(run_of_line.size(),
-                                                            {line_length, 0});
+    std::vector<std::pair<std::size_t, std::size_t>> extent(run_of_line.size(), {line_length, 0});
     for (unsigned int i = 0; i < n_held; ++i)
       {
         auto &[first, last] = extent[slot[i] / line_length];
@@ -96,7 +96,7 @@ namespace PeriArlequin
         half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
 
     runs.clear();
-    max_run_length = 0;
+    max_run_length        = 0;
     std::size_t mask_size = 0;
     for (std::size_t line = 0; line < run_of_line.size(); ++line)
       if (extent[line].first <= extent[line].second)
@@ -137,8 +137,8 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
         {
-          const unsigned int k = bonds.stencil_index[n];
-          const std::size_t  s = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
+          const unsigned int k   = bonds.stencil_index[n];
+          const std::size_t  s   = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
           const Run         &run = runs[run_of_line[s / line_length]];
           mask[run.mask_begin + half_of_entry[k] * std::size_t(run.length) + (s - run.begin)] =
             bonds.state[n] != BondFamilies<dim>::broken;
@@ -148,13 +148,13 @@ namespace PeriArlequin
     for (unsigned int r = 0; r < runs.size(); ++r)
       for (std::size_t h = 0; h < n_half; ++h)
         {
-          const auto first = mask.begin() + runs[r].mask_begin + h * runs[r].length;
-          const auto end   = first + runs[r].length;
+          const auto first  = mask.begin() + runs[r].mask_begin + h * runs[r].length;
+          const auto end    = first + runs[r].length;
           const auto intact = [](const std::uint8_t m) { return m != 0; };
           const auto begin  = std::find_if(first, end, intact);
           if (begin == end)
             continue;
-          const auto last = std::find_if(std::make_reverse_iterator(end),
+          const auto last             = std::find_if(std::make_reverse_iterator(end),
                                          std::make_reverse_iterator(begin),
                                          intact);
           block_slots[r * n_half + h] = {static_cast<unsigned int>(begin - first),

@@ -1,10 +1,9 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/symmetric_tensor.h>
-
 #include <periarlequin/base/crack_tip_field.h>
-
 #include <periarlequin/postprocess/crack_diagnostics.h>
 #include <periarlequin/simulator.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
@@ -74,7 +73,7 @@ namespace PeriArlequin
       void
       for_each_neighbour(const unsigned int i, const Visitor &visit) const
       {
-        const auto centre = cell_of(points[i]);
+        const auto centre    = cell_of(points[i]);
         const int  n_offsets = static_cast<int>(std::pow(3, dim));
         for (int o = 0; o < n_offsets; ++o)
           {
@@ -112,8 +111,8 @@ namespace PeriArlequin
         return h;
       }
 
-      const std::vector<Point<dim>>                           &points;
-      const double                                             radius;
+      const std::vector<Point<dim>>                               &points;
+      const double                                                 radius;
       std::unordered_map<std::uint64_t, std::vector<unsigned int>> grid;
     };
   } // namespace
@@ -122,8 +121,8 @@ namespace PeriArlequin
   void
   CrackTracker<dim>::update(const double time, const std::vector<CrackedParticle> &cracked)
   {
-    const unsigned int record = n_records++;
-    const unsigned int n      = cracked.size();
+    const unsigned int        record = n_records++;
+    const unsigned int        n      = cracked.size();
     std::vector<Point<dim>>   x(n);
     std::vector<unsigned int> first(n);
     for (unsigned int i = 0; i < n; ++i)
@@ -450,11 +449,11 @@ namespace PeriArlequin
   void
   CrackDiagnostics<dim>::parse_parameters(ParameterHandler &prm)
   {
-    damage_threshold  = prm.get_double("Damage threshold");
-    link_distance     = prm.get_double("Link distance");
-    branch_separation = prm.get_double("Branch separation");
-    speed_window      = prm.get_integer("Speed window");
-    reported_branches = prm.get_integer("Reported branches");
+    damage_threshold           = prm.get_double("Damage threshold");
+    link_distance              = prm.get_double("Link distance");
+    branch_separation          = prm.get_double("Branch separation");
+    speed_window               = prm.get_integer("Speed window");
+    reported_branches          = prm.get_integer("Reported branches");
     const std::string tip_text = prm.get("Initial tip");
     has_initial_tip            = !tip_text.empty();
     if (has_initial_tip)
@@ -466,8 +465,8 @@ namespace PeriArlequin
         if (!valid)
           throw_invalid_parameter("Postprocess/cracks/Initial tip",
                                   tip_text,
-                                  "empty or " + std::to_string(dim) +
-                                    " coordinates 'x, y" + (dim == 3 ? ", z" : "") + "' [m]");
+                                  "empty or " + std::to_string(dim) + " coordinates 'x, y" +
+                                    (dim == 3 ? ", z" : "") + "' [m]");
         for (unsigned int d = 0; d < dim; ++d)
           initial_tip[d] = Utilities::string_to_double(coordinates[d]);
       }
@@ -489,19 +488,20 @@ namespace PeriArlequin
     AssertThrow(pd != nullptr,
                 ExcMessage("Invalid input: 'Postprocess/List of postprocessors' names 'cracks' "
                            "but the case has no PD zone (Peridynamics/Region is empty)."));
-    const auto  &parameters = pd->get_parameters();
+    const auto    &parameters   = pd->get_parameters();
     const MPI_Comm communicator = pd->get_communicator();
     if (!tracker)
       tracker = std::make_unique<CrackTracker<dim>>(link_distance * parameters.lattice_spacing,
                                                     branch_separation * parameters.horizon());
     if (!initiation && has_initial_tip)
       {
-        initiation = std::make_unique<CrackInitiation<dim>>(
-          initial_tip,
-          initial_direction * numbers::PI / 180.,
-          parameters.horizon(),
-          std::array<double, 2>{{kink_fit_range[0] * parameters.horizon(),
-                                 kink_fit_range[1] * parameters.horizon()}});
+        initiation =
+          std::make_unique<CrackInitiation<dim>>(initial_tip,
+                                                 initial_direction * numbers::PI / 180.,
+                                                 parameters.horizon(),
+                                                 std::array<double, 2>{
+                                                   {kink_fit_range[0] * parameters.horizon(),
+                                                    kink_fit_range[1] * parameters.horizon()}});
         load_at_initiation.fill(std::numeric_limits<double>::quiet_NaN());
         load_at_growth.fill(std::numeric_limits<double>::quiet_NaN());
       }
@@ -546,13 +546,13 @@ namespace PeriArlequin
     history.add_value("crack_extension", tracker->crack_extension());
     history.add_value("crack_area", area - initial_area);
     history.add_value("broken_bond_energy", parameters.energy_release_rate * (area - initial_area));
-    const auto        &branches = tracker->get_branches();
-    const double       nan      = std::numeric_limits<double>::quiet_NaN();
-    const char        *axes[3]  = {"x", "y", "z"};
+    const auto  &branches = tracker->get_branches();
+    const double nan      = std::numeric_limits<double>::quiet_NaN();
+    const char  *axes[3]  = {"x", "y", "z"};
     for (unsigned int b = 0; b < reported_branches; ++b)
       {
-        const bool         shown  = b < branches.size() && branches[b].active;
-        const std::string  prefix = "branch_" + std::to_string(b) + "_";
+        const bool        shown  = b < branches.size() && branches[b].active;
+        const std::string prefix = "branch_" + std::to_string(b) + "_";
         for (unsigned int d = 0; d < dim; ++d)
           history.add_value(prefix + axes[d], shown ? branches[b].tips.back()[d] : nan);
         history.add_value(prefix + "path_length", shown ? branches[b].path_lengths.back() : nan);
@@ -619,23 +619,21 @@ namespace PeriArlequin
   template <int dim>
   void
   CrackDiagnostics<dim>::report_initiation(
-    const Simulator<dim>                                       &simulator,
+    const Simulator<dim>                                           &simulator,
     const std::vector<typename CrackTracker<dim>::CrackedParticle> &cracked,
-    EnergyHistory                                              &history)
+    EnergyHistory                                                  &history)
   {
-    const PDZone<dim> &pd    = *simulator.get_pd_zone();
-    const auto        &bonds = pd.get_bonds();
-    const auto         x     = pd.reference_positions();
+    const PDZone<dim> &pd              = *simulator.get_pd_zone();
+    const auto        &bonds           = pd.get_bonds();
+    const auto         x               = pd.reference_positions();
     unsigned long long broken_near_tip = 0;
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
       if (initiation->distance_from_tip(x[i]) <= pd.get_parameters().horizon())
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           broken_near_tip += bonds.state[n] == BondFamilies<dim>::broken;
     const double before = initiation->initiation_time(), growth_before = initiation->growth_time();
-    const double time   = simulator.get_time();
-    initiation->update(time,
-                       cracked,
-                       Utilities::MPI::sum(broken_near_tip, pd.get_communicator()));
+    const double time = simulator.get_time();
+    initiation->update(time, cracked, Utilities::MPI::sum(broken_near_tip, pd.get_communicator()));
 
     const CrackTipField<dim> *field = nullptr;
     for (const auto &condition : simulator.get_problem_data().boundary_conditions)

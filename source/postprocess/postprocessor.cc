@@ -28,11 +28,13 @@ namespace PeriArlequin
   void
   EnergyPostprocessor<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
-    const FEZone<dim> *fe = simulator.has_fe_zone() ? &simulator.get_fe_zone() : nullptr;
-    const PDZone<dim> *pd = simulator.get_pd_zone();
-    const double fe_kinetic = fe ? fe->kinetic_energy() : 0., fe_strain = fe ? fe->strain_energy() : 0.;
-    const double pd_kinetic = pd ? pd->kinetic_energy() : 0., pd_strain = pd ? pd->strain_energy() : 0.;
-    const double work = (fe ? fe->external_work() : 0.) + (pd ? pd->external_work() : 0.);
+    const FEZone<dim> *fe         = simulator.has_fe_zone() ? &simulator.get_fe_zone() : nullptr;
+    const PDZone<dim> *pd         = simulator.get_pd_zone();
+    const double       fe_kinetic = fe ? fe->kinetic_energy() : 0.,
+                 fe_strain        = fe ? fe->strain_energy() : 0.;
+    const double pd_kinetic       = pd ? pd->kinetic_energy() : 0.,
+                 pd_strain        = pd ? pd->strain_energy() : 0.;
+    const double work    = (fe ? fe->external_work() : 0.) + (pd ? pd->external_work() : 0.);
     const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
     history.add_value("kinetic_energy", kinetic);
     history.add_value("strain_energy", strain);
@@ -50,7 +52,7 @@ namespace PeriArlequin
   MonitorRegionEnergies<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
     const PDZone<dim> *pd = simulator.get_pd_zone();
-    const auto energies =
+    const auto         energies =
       pd ? pd->energies_in(simulator.get_monitor_region()) : std::pair<double, double>();
     history.add_value("pure_pd_kinetic_energy", energies.first);
     history.add_value("pure_pd_strain_energy", energies.second);
@@ -62,7 +64,7 @@ namespace PeriArlequin
   ConstraintResiduals<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
     const Coupling<dim> *coupling = simulator.get_coupling();
-    const auto residuals =
+    const auto           residuals =
       coupling ? coupling->constraint_residuals() : std::pair<double, double>();
     history.add_value("constraint_residual", residuals.first);
     history.add_value("constraint_rate_residual", residuals.second);
@@ -73,8 +75,8 @@ namespace PeriArlequin
   void
   BondStretches<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
-    const PDZone<dim> *pd = simulator.get_pd_zone();
-    double largest[3] = {0, 0, 0};
+    const PDZone<dim> *pd         = simulator.get_pd_zone();
+    double             largest[3] = {0, 0, 0};
     if (pd)
       {
         const BondFamilies<dim> &bonds = pd->get_bonds();
@@ -89,9 +91,9 @@ namespace PeriArlequin
               const auto        &entry = bonds.stencil[bonds.stencil_index[n]];
               const double       stretch =
                 BondFamilies<dim>::extension(entry, u[j] - u[i]).first / entry.length;
-              const double       a     = std::max(alpha[i], alpha[j]);
-              const unsigned int part  = a >= 1. ? 2 : (a > 0. ? 1 : 0);
-              largest[part]            = std::max(largest[part], stretch);
+              const double       a    = std::max(alpha[i], alpha[j]);
+              const unsigned int part = a >= 1. ? 2 : (a > 0. ? 1 : 0);
+              largest[part]           = std::max(largest[part], stretch);
             }
         Utilities::MPI::max(ArrayView<const double>(largest, 3),
                             pd->get_communicator(),
@@ -175,8 +177,7 @@ namespace PeriArlequin
           }
         const auto all = Utilities::MPI::all_gather(communicator, candidate);
         for (unsigned int r = 0; r < n_ranks; ++r)
-          if (!all[r].empty() &&
-              (particle_owner[k] == n_ranks || all[r] < all[particle_owner[k]]))
+          if (!all[r].empty() && (particle_owner[k] == n_ranks || all[r] < all[particle_owner[k]]))
             particle_owner[k] = r;
         if (particle_owner[k] == n_ranks)
           throw_invalid_parameter("Postprocess/probes/Points",
@@ -257,9 +258,9 @@ namespace PeriArlequin
     history.add_value("repartitions", simulator.n_repartitions());
     history.add_value("load_imbalance", pd ? simulator.load_imbalance() : 0.);
 
-    const auto        &output   = simulator.get_output_parameters();
-    const unsigned int step     = simulator.get_step_number();
-    const bool         due      = output.output_interval > 0 &&
+    const auto        &output = simulator.get_output_parameters();
+    const unsigned int step   = simulator.get_step_number();
+    const bool         due    = output.output_interval > 0 &&
                      (step % output.output_interval == 0 || step == simulator.get_n_steps());
     if (!pd || !due || Utilities::MPI::this_mpi_process(pd->get_communicator()) != 0)
       return;

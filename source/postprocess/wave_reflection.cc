@@ -1,8 +1,8 @@
-#include <deal.II/base/utilities.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/postprocess/wave_reflection.h>
 #include <periarlequin/simulator.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <array>
 #include <cmath>
@@ -76,7 +76,7 @@ namespace PeriArlequin
     layout(const WaveReflection &study)
     {
       const double h = study.fe_cell_size, lambda = study.wavelength * h;
-      const double c = std::sqrt(WaveReflection::youngs_modulus / WaveReflection::density);
+      const double c     = std::sqrt(WaveReflection::youngs_modulus / WaveReflection::density);
       const auto   cells = [h](const double length) { return h * std::ceil(length / h - 1e-9); };
       StripLayout  strip;
       strip.sigma              = lambda;
@@ -110,10 +110,11 @@ namespace PeriArlequin
   std::string
   WaveReflection::case_text(const bool reference) const
   {
-    const StripLayout  strip = layout(*this);
-    const double       h = fe_cell_size, dx = h / size_ratio, k = 2 * M_PI / (wavelength * h);
-    const double       c_bar = std::sqrt(youngs_modulus / density);
-    const double       c_l   = std::sqrt(youngs_modulus / (density * (1 - poissons_ratio * poissons_ratio)));
+    const StripLayout strip = layout(*this);
+    const double      h = fe_cell_size, dx = h / size_ratio, k = 2 * M_PI / (wavelength * h);
+    const double      c_bar = std::sqrt(youngs_modulus / density);
+    const double      c_l =
+      std::sqrt(youngs_modulus / (density * (1 - poissons_ratio * poissons_ratio)));
     std::ostringstream text;
     text << std::setprecision(17);
     // u = A g cos(k s), s = x - x0, g = exp(-s^2 / (2 sigma^2)); its derivatives by hand.
@@ -130,8 +131,8 @@ namespace PeriArlequin
        << k << " * " << s.str() << "))";
     const double length = strip.length;
     text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " << length << ", "
-         << h << "\n  set Subdivisions = " << std::lround(length / h) << ", 1\nend\n"
+         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " << length
+         << ", " << h << "\n  set Subdivisions = " << std::lround(length / h) << ", 1\nend\n"
          << "subsection Material\n  set Young's modulus = " << youngs_modulus
          << "\n  set Poisson's ratio = " << poissons_ratio << "\n  set Density = " << density
          << "\n  set Two-dimensional model = plane stress\nend\n"
@@ -143,9 +144,10 @@ namespace PeriArlequin
          << "\nend\n";
     if (!reference)
       text << "subsection Coupling\n"
-           << coupling << "  set Overlap region = " << strip.pure_pd_end << ", 0 : "
-           << strip.overlap_end << ", " << h << "\n  set Finite element region = "
-           << strip.overlap_end << ", 0 : " << length << ", " << h << "\nend\n";
+           << coupling << "  set Overlap region = " << strip.pure_pd_end
+           << ", 0 : " << strip.overlap_end << ", " << h
+           << "\n  set Finite element region = " << strip.overlap_end << ", 0 : " << length << ", "
+           << h << "\nend\n";
     // The packet moving towards the overlap (v = -c u' to +x, +c u' to -x), with the
     // lateral strain -nu u' of uniaxial stress.
     const double speed = from_fe ? -c_bar : c_bar;
@@ -213,8 +215,8 @@ namespace PeriArlequin
           for (unsigned int k = 0; k < dofs.size(); ++k)
             if (inside(points[k]))
               {
-                auto &node = nodes[{points[k][0], points[k][1]}];
-                node[0]    = fe.lumped_mass().local_element(dofs[k]);
+                auto &node              = nodes[{points[k][0], points[k][1]}];
+                node[0]                 = fe.lumped_mass().local_element(dofs[k]);
                 node[1 + components[k]] = fe.get_state().velocity.local_element(dofs[k]);
               }
           for (const auto &[x, node] : nodes)
@@ -237,7 +239,8 @@ namespace PeriArlequin
         for (unsigned int r = 0; r + 5 <= part.size(); r += 5)
           {
             const auto &w = velocity.at({part[r], part[r + 1]});
-            sum += part[r + 2] * (std::pow(part[r + 3] - w[0], 2) + std::pow(part[r + 4] - w[1], 2));
+            sum +=
+              part[r + 2] * (std::pow(part[r + 3] - w[0], 2) + std::pow(part[r + 4] - w[1], 2));
           }
       return sum;
     }
@@ -253,8 +256,9 @@ namespace PeriArlequin
     reference->setup();
     coupled->setup();
     const auto energy = [this](const Simulator<2> &simulator) {
-      return from_fe ? simulator.get_fe_zone().kinetic_energy() + simulator.get_fe_zone().strain_energy() :
-                       simulator.get_pd_zone()->kinetic_energy() + simulator.get_pd_zone()->strain_energy();
+      return from_fe ?
+               simulator.get_fe_zone().kinetic_energy() + simulator.get_fe_zone().strain_energy() :
+               simulator.get_pd_zone()->kinetic_energy() + simulator.get_pd_zone()->strain_energy();
     };
     Result result;
     result.incident_energy = energy(*reference);
@@ -276,10 +280,10 @@ namespace PeriArlequin
         // The FE zone's energy over what the reference carried past the pure PD zone.
         Region<2> pure_pd;
         pure_pd.boxes.push_back(Box<2>{Point<2>(0, 0), Point<2>(strip.pure_pd_end, fe_cell_size)});
-        const auto  &pd   = *reference->get_pd_zone();
-        const auto   left = pd.energies_in(pure_pd);
-        const double past = pd.kinetic_energy() + pd.strain_energy() - left.first - left.second;
-        const auto  &fe   = coupled->get_fe_zone();
+        const auto  &pd    = *reference->get_pd_zone();
+        const auto   left  = pd.energies_in(pure_pd);
+        const double past  = pd.kinetic_energy() + pd.strain_energy() - left.first - left.second;
+        const auto  &fe    = coupled->get_fe_zone();
         result.transmitted = (fe.kinetic_energy() + fe.strain_energy()) / past;
       }
     else

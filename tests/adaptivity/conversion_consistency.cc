@@ -52,9 +52,7 @@ namespace
   };
 } // namespace
 
-PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(BoxConversion,
-                                           "test box",
-                                           "cells in a fixed box (test)")
+PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(BoxConversion, "test box", "cells in a fixed box (test)")
 
 std::string
 case_text(const std::string &displacement, const std::string &velocity)
@@ -102,12 +100,12 @@ main(int argc, char **argv)
        "1e-7*x; 0",
        0.5 * E / (1 - nu * nu) * eps * eps,
        1.01349,
-       [](const Point<2> &x) { return Tensor<1, 2>({1e-7 * x[0], 0.}); }},
-      {"shear strain",
-       "1e-7*y; 0",
-       0.5 * mu * eps * eps,
-       0.96145,
-       [](const Point<2> &x) { return Tensor<1, 2>({1e-7 * x[1], 0.}); }}};
+       [](const Point<2> &x) {
+         return Tensor<1, 2>({1e-7 * x[0], 0.});
+       }},
+      {"shear strain", "1e-7*y; 0", 0.5 * mu * eps * eps, 0.96145, [](const Point<2> &x) {
+         return Tensor<1, 2>({1e-7 * x[1], 0.});
+       }}};
     for (const auto &strain : strains)
       {
         auto simulator = make_simulator<2>(case_text(strain.displacement, "0; 0"));

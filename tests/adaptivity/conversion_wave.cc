@@ -43,8 +43,7 @@ namespace
     {
       for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
-          convert[cell->active_cell_index()] =
-            cell->center()[0] > -0.6 && cell->center()[0] < -0.4;
+          convert[cell->active_cell_index()] = cell->center()[0] > -0.6 && cell->center()[0] < -0.4;
     }
   };
 } // namespace
@@ -73,7 +72,8 @@ strip_text(const std::string &pd_region, const bool adaptive)
          "subsection Time\n  set Time step = 2e-7\n  set End time = 1.6e-4\nend\n"
          "subsection Initial conditions\nsubsection function\n"
          "  subsection Displacement\n    set Function expression = if(" +
-         pulse + ", 1e-5*cos(pi*(x + 0.9)/0.4)^2, 0); 0\n  end\n"
+         pulse +
+         ", 1e-5*cos(pi*(x + 0.9)/0.4)^2, 0); 0\n  end\n"
          "  subsection Velocity\n    set Function expression = if(" +
          pulse + ", 5055.3*1e-5*pi/0.4*sin(2*pi*(x + 0.9)/0.4), 0); 0\n  end\nend\nend\n" +
          quiet_output();
@@ -83,7 +83,7 @@ strip_text(const std::string &pd_region, const bool adaptive)
 double
 energy_left(const PeriArlequin::Simulator<2> &simulator)
 {
-  const auto &fe = simulator.get_fe_zone();
+  const auto                                &fe = simulator.get_fe_zone();
   LinearAlgebra::distributed::Vector<double> force;
   fe.initialize_vector(force);
   fe.compute_internal_force(fe.get_state().displacement, force);
@@ -112,17 +112,17 @@ main(int argc, char **argv)
       bool        adaptive;
       double      reflection = 0, conversion_energy = 0;
     };
-    std::vector<Run> runs = {{"fixed", "-0.4, -0.04 : 0.4, 0.04", false},
-                             {"adaptive", "-0.4, -0.04 : 0.4, 0.04", true},
-                             {"fixed at the final zone", "-0.6, -0.04 : 0.4, 0.04", false}};
-    double pulse_energy = 0;
+    std::vector<Run> runs         = {{"fixed", "-0.4, -0.04 : 0.4, 0.04", false},
+                                     {"adaptive", "-0.4, -0.04 : 0.4, 0.04", true},
+                                     {"fixed at the final zone", "-0.6, -0.04 : 0.4, 0.04", false}};
+    double           pulse_energy = 0;
     for (auto &run : runs)
       {
         auto simulator = make_simulator<2>(strip_text(run.region, run.adaptive));
         simulator->run();
-        const auto total = simulator->get_energy_history().column("total_energy");
-        pulse_energy     = total.front();
-        run.reflection   = energy_left(*simulator) / pulse_energy;
+        const auto total      = simulator->get_energy_history().column("total_energy");
+        pulse_energy          = total.front();
+        run.reflection        = energy_left(*simulator) / pulse_energy;
         run.conversion_energy = simulator->conversion_energy_change() / pulse_energy;
         report(run.name + ": reflected energy / E0", run.reflection);
         report(run.name + ": cells converted", simulator->n_converted_cells());

@@ -33,9 +33,9 @@ main(int argc, char **argv)
       "    set Function expression = 1e-3*x^2; 0\n  end\nend\nend\n" +
       quiet_output());
     simulator->setup();
-    const auto &fe = simulator->get_fe_zone();
-    const auto &pd = *simulator->get_pd_zone();
-    const auto count = [&](const std::string &strain, const std::string &buffer) {
+    const auto &fe    = simulator->get_fe_zone();
+    const auto &pd    = *simulator->get_pd_zone();
+    const auto  count = [&](const std::string &strain, const std::string &buffer) {
       ParameterHandler prm;
       PeriArlequin::ConversionCriterionRegistry<2>::declare_parameters(prm);
       prm.parse_input_from_string("subsection strain\n  set Strain = " + strain +

@@ -47,15 +47,16 @@ namespace
     prm << std::setprecision(17) << "set Dimension = 3\n"
         << "subsection Geometry\n  set Lower corner = 0, 0, 0\n  set Upper corner = " << L << ", "
         << W << ", " << W << "\n  set Subdivisions = 40, 4, 4\nend\n"
-        << "subsection Material\n  set Young's modulus = " << E << "\n  set Poisson's ratio = " << nu
-        << "\n  set Density = " << rho << "\nend\n";
+        << "subsection Material\n  set Young's modulus = " << E
+        << "\n  set Poisson's ratio = " << nu << "\n  set Density = " << rho << "\nend\n";
     if (coupled)
       prm << "subsection Peridynamics\n  set Region = 0.015, 0, 0 : 0.025, " << W << ", " << W
           << "\n  set Lattice spacing = 5e-4\n  set Horizon factor = 1.5\nend\n"
           << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
           << "  set Damping constant = 10\n"
-          << "  set Overlap region = 0.012, 0, 0 : 0.015, " << W << ", " << W << " ; 0.025, 0, 0 : 0.028, "
-          << W << ", " << W << "\n  set Finite element region = 0, 0, 0 : 0.012, " << W << ", " << W
+          << "  set Overlap region = 0.012, 0, 0 : 0.015, " << W << ", " << W
+          << " ; 0.025, 0, 0 : 0.028, " << W << ", " << W
+          << "\n  set Finite element region = 0, 0, 0 : 0.012, " << W << ", " << W
           << " ; 0.028, 0, 0 : " << L << ", " << W << ", " << W << "\nend\n";
     prm << "subsection Initial conditions\n  subsection function\n    subsection Velocity\n"
         << "      set Function expression = " << v0 << "; 0; 0\n    end\n  end\nend\n"
@@ -95,15 +96,16 @@ namespace
           last = n;
         }
     Impact impact;
-    impact.duration = (last - first + 1) * dt;
-    impact.rebound  = history.column("linear_momentum_x").back() / (rho * L * W * W) / v0;
-    impact.point_a  = history.column("probe_0_v_x");
-    const auto time = history.column("time");
+    impact.duration     = (last - first + 1) * dt;
+    impact.rebound      = history.column("linear_momentum_x").back() / (rho * L * W * W) / v0;
+    impact.point_a      = history.column("probe_0_v_x");
+    const auto time     = history.column("time");
     const auto crossing = [&](const double level) {
       for (unsigned int n = 0; n < time.size(); ++n)
         if (impact.point_a[n] < level)
           return time[n];
-      AssertThrow(false, ExcMessage("point A's velocity never fell below " + std::to_string(level)));
+      AssertThrow(false,
+                  ExcMessage("point A's velocity never fell below " + std::to_string(level)));
       return 0.;
     };
     impact.first_front  = crossing(0.5 * v0);
@@ -135,7 +137,10 @@ main(int argc, char **argv)
       {
         const Impact fe = run_case(0, false), coupled = run_case(0, true);
         check("nu = 0, pure FE: contact duration / (2 L / c0)", fe.duration / duration, 1., 0.015);
-        check("nu = 0, coupled: contact duration / (2 L / c0)", coupled.duration / duration, 1., 0.015);
+        check("nu = 0, coupled: contact duration / (2 L / c0)",
+              coupled.duration / duration,
+              1.,
+              0.015);
         check("nu = 0, pure FE: rebound velocity / -v0", -fe.rebound, 1., 0.03);
         check("nu = 0: compression front at A, coupled - pure FE [s]",
               coupled.first_front - fe.first_front,
@@ -163,13 +168,13 @@ main(int argc, char **argv)
       {
         // The columns that carry the result; the transverse ones are zero by symmetry and
         // hold round-off only.
-        const std::vector<std::string> columns = {"kinetic_energy",
-                                                  "strain_energy",
-                                                  "total_energy",
-                                                  "contact_force_x",
-                                                  "linear_momentum_x",
-                                                  "probe_0_v_x"};
-        auto two_ranks = make_simulator<3>(bar_case(0.3, true));
+        const std::vector<std::string> columns   = {"kinetic_energy",
+                                                    "strain_energy",
+                                                    "total_energy",
+                                                    "contact_force_x",
+                                                    "linear_momentum_x",
+                                                    "probe_0_v_x"};
+        auto                           two_ranks = make_simulator<3>(bar_case(0.3, true));
         two_ranks->run();
         double worst = 0;
         if (is_root())

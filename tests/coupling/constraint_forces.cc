@@ -54,13 +54,21 @@ namespace
     if (multiplier_spacing > 1)
       title << " on a grid of " << multiplier_spacing << " FE cells";
     const std::string name = title.str();
-    text << strip_case(method, "energy", "cg", false, false, smooth_pulse, "0; 0", time_step, end_time, 1)
+    text << strip_case(method,
+                       "energy",
+                       "cg",
+                       false,
+                       false,
+                       smooth_pulse,
+                       "0; 0",
+                       time_step,
+                       end_time,
+                       1)
          << "subsection Coupling\n  subsection weak\n    set Multiplier spacing = "
          << multiplier_spacing << "\n  end\nend\n";
     auto simulator = make_simulator<2>(text.str());
     simulator->setup();
-    auto &coupling =
-      dynamic_cast<PeriArlequin::ArlequinCoupling<2> &>(*simulator->get_coupling());
+    auto &coupling = dynamic_cast<PeriArlequin::ArlequinCoupling<2> &>(*simulator->get_coupling());
     check_jacobi_diagonal(name, coupling.multiplier_solver());
     auto        &pd   = *simulator->get_pd_zone();
     const auto  &fe   = simulator->get_fe_zone();
@@ -71,15 +79,15 @@ namespace
     };
 
     const double initial_energy = energy();
-    double largest_rate = 0, largest_multiplier = 0, v_max = 0, drift = 0;
+    double       largest_rate = 0, largest_multiplier = 0, v_max = 0, drift = 0;
     while (simulator->get_time() < end_time * (1 - 1e-9))
       {
         simulator->advance();
         largest_rate =
           std::max(largest_rate, simulator->get_coupling()->constraint_residuals().second);
         largest_multiplier = std::max(largest_multiplier, coupling.multipliers().linfty_norm());
-        v_max = std::max(v_max, simulator->get_velocity().linfty_norm());
-        drift = std::max(drift, std::abs(energy() - initial_energy));
+        v_max              = std::max(v_max, simulator->get_velocity().linfty_norm());
+        drift              = std::max(drift, std::abs(energy() - initial_energy));
       }
     // The smallest PD mass of the overlap nodes gives the largest correction per multiplier.
     double smallest_mass = std::numeric_limits<double>::max();

@@ -1,12 +1,12 @@
 #ifndef periarlequin_tests_coupled_cases_h
 #define periarlequin_tests_coupled_cases_h
 
-#include "../tests.h"
-
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+
+#include "../tests.h"
 
 /**
  * Coupled cases shared by the coupling tests, as parameter text. Aluminium of the paper's
@@ -35,8 +35,8 @@ namespace PeriArlequinTests
     return "subsection Coupling\n  set Method = " + method + "\n  set Blending = " + blending +
            "\n  set Multiplier solver = " + solver +
            "\n  set Fine-scale damping = " + (damping ? "true" : "false") +
-           "\n  set Overlap region = " + overlap + "\n  set Finite element region = " +
-           fe_region + "\nend\n";
+           "\n  set Overlap region = " + overlap + "\n  set Finite element region = " + fe_region +
+           "\nend\n";
   }
 
   /**
@@ -58,17 +58,15 @@ namespace PeriArlequinTests
     text << "set Dimension = 2\n"
          << "subsection Geometry\n  set Lower corner = -0.2, -0.2\n"
          << "  set Upper corner = 0.2, 0.2\n  set Subdivisions = 20, 20\nend\n"
-         << aluminium()
-         << "subsection Peridynamics\n  set Region = -0.06, -0.06 : 0.06, 0.06\n"
+         << aluminium() << "subsection Peridynamics\n  set Region = -0.06, -0.06 : 0.06, 0.06\n"
          << "  set Lattice spacing = 0.005\nend\n";
     std::ostringstream overlap, fe;
-    overlap << -a << ", " << -a << " : -0.06, " << a << " ; 0.06, " << -a << " : " << a << ", "
-            << a << " ; -0.06, " << -a << " : 0.06, -0.06 ; -0.06, 0.06 : 0.06, " << a;
+    overlap << -a << ", " << -a << " : -0.06, " << a << " ; 0.06, " << -a << " : " << a << ", " << a
+            << " ; -0.06, " << -a << " : 0.06, -0.06 ; -0.06, 0.06 : 0.06, " << a;
     fe << "-0.2, -0.2 : " << -a << ", 0.2 ; " << a << ", -0.2 : 0.2, 0.2 ; " << -a
        << ", -0.2 : " << a << ", " << -a << " ; " << -a << ", " << a << " : " << a << ", 0.2";
     text << coupling_text(method, blending, "cg", false, overlap.str(), fe.str());
-    text << "subsection Time\n  set Time step = 2e-7\n  set End time = " << end_time
-         << "\nend\n"
+    text << "subsection Time\n  set Time step = 2e-7\n  set End time = " << end_time << "\nend\n"
          << "subsection Initial conditions\nsubsection function\n"
          << "  subsection Displacement\n    set Function expression = " << initial_displacement
          << "\n  end\n"
@@ -229,8 +227,8 @@ namespace PeriArlequinTests
     check_below(name + ": max acceleration / a_scale",
                 a_max / (c * c * motion.u_max / (h * h)),
                 1e-10);
-    const auto residuals = simulator->get_coupling()->constraint_residuals();
-    const double rows = std::sqrt(simulator->get_coupling()->n_multipliers());
+    const auto   residuals = simulator->get_coupling()->constraint_residuals();
+    const double rows      = std::sqrt(simulator->get_coupling()->n_multipliers());
     check_below(name + ": |g| / (u_max sqrt(rows))",
                 residuals.first / (motion.u_max * rows),
                 1e-12);
@@ -284,7 +282,8 @@ namespace PeriArlequinTests
         overlap_text << "0, " << a - overlap << " : 0.1, " << a << " ; 0, " << b << " : 0.1, "
                      << b + overlap;
         fe_text << "0, 0 : 0.1, " << a - overlap << " ; 0, " << b + overlap << " : 0.1, 0.04";
-        text << coupling_text("weak", blending, "diagonal", true, overlap_text.str(), fe_text.str());
+        text
+          << coupling_text("weak", blending, "diagonal", true, overlap_text.str(), fe_text.str());
       }
     text << "subsection Time\n  set Time step = " << time_step << "\n  set End time = " << end_time
          << "\nend\n"
@@ -322,11 +321,12 @@ namespace PeriArlequinTests
    * (E = 29 GPa, nu = 0.29, rho = 2400, G0 = 36 kJ/m^2, plane strain) with a crack from the
    * middle of its left side to the centre, the crack-tip field on its four sides with
    * K_eff = Kdot t at the phase angle @p psi [deg], Kdot such that G = G0 at @p critical_time,
-   * run to @p end_time; the time step is 1e-7 s x 128 / n. A lattice of @p n sites per side, horizon factor @p m, @p cells FE
-   * cells per side; coupled: PD for x <= A c, |y| <= H c (c the cell size, H c >= 7 delta,
-   * A c >= 6 delta), overlaps of 2 cells, FE beyond, weak coupling, force blending, damping constant 10 (the
-   * paper's 30 over-damps these narrow overlaps at this time step). The
-   * crack diagnostics follow the tip at the centre; bonds break as the fracture criterion
+   * run to @p end_time; the time step is 1e-7 s x 128 / n. A lattice of @p n sites per side,
+   * horizon factor @p m, @p cells FE cells per side; coupled: PD for x <= A c, |y| <= H c (c the
+   * cell size, H c >= 7 delta, A c >= 6 delta), overlaps of 2 cells, FE beyond, weak coupling,
+   * force blending, damping constant 10 (the paper's 30 over-damps these narrow overlaps at this
+   * time step). The crack diagnostics follow the tip at the centre; bonds break as the fracture
+   * criterion
    * @p criterion says.
    */
   inline std::string
@@ -340,7 +340,7 @@ namespace PeriArlequinTests
                   const std::string &criterion = "critical stretch")
   {
     const double       L = 0.03125, dx = 2 * L / n, c = 2 * L / cells, delta = m * dx;
-    const double       kc   = std::sqrt(36e3 * 29e9 / (1 - 0.29 * 0.29));
+    const double       kc = std::sqrt(36e3 * 29e9 / (1 - 0.29 * 0.29));
     std::ostringstream text;
     text << std::setprecision(15) << "set Dimension = 2\n"
          << "subsection Geometry\n  set Lower corner = " << -L << ", " << -L
@@ -363,12 +363,12 @@ namespace PeriArlequinTests
         text << "  set Region = " << -L << ", " << -y1 << " : " << x1 << ", " << y1 << "\nend\n"
              << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
              << "  set Damping constant = 10\n"
-             << "  set Overlap region = " << -L << ", " << y1 << " : " << ox << ", " << oy
-             << " ; " << -L << ", " << -oy << " : " << ox << ", " << -y1 << " ; " << x1 << ", "
-             << -y1 << " : " << ox << ", " << y1 << "\n"
+             << "  set Overlap region = " << -L << ", " << y1 << " : " << ox << ", " << oy << " ; "
+             << -L << ", " << -oy << " : " << ox << ", " << -y1 << " ; " << x1 << ", " << -y1
+             << " : " << ox << ", " << y1 << "\n"
              << "  set Finite element region = " << -L << ", " << oy << " : " << L << ", " << L
-             << " ; " << -L << ", " << -L << " : " << L << ", " << -oy << " ; " << ox << ", "
-             << -oy << " : " << L << ", " << oy << "\nend\n";
+             << " ; " << -L << ", " << -L << " : " << L << ", " << -oy << " ; " << ox << ", " << -oy
+             << " : " << L << ", " << oy << "\nend\n";
       }
     text << "subsection Boundary conditions\n  subsection Crack tip field\n"
          << "    set Boundary ids = 0, 1, 2, 3\n    set Tip = 0, 0\n"

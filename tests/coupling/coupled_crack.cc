@@ -12,9 +12,9 @@
 //    the run stops with the message that damage reached the overlap before the end, and
 //    still no bond of the overlap or the slave layer is broken.
 
-#include "coupled_cases.h"
-
 #include <periarlequin/pd/bond_families.h>
+
+#include "coupled_cases.h"
 
 using namespace PeriArlequinTests;
 using namespace PeriArlequin;
@@ -25,8 +25,8 @@ namespace
   unsigned int
   broken_coupled_bonds(const PDZone<2> &pd)
   {
-    const BondFamilies<2> &bonds = pd.get_bonds();
-    const auto             alpha = pd.blending_weights();
+    const BondFamilies<2> &bonds    = pd.get_bonds();
+    const auto             alpha    = pd.blending_weights();
     unsigned int           n_broken = 0;
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
@@ -40,7 +40,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double delta = 3.2 * 6.25e-4;
+    const double delta   = 3.2 * 6.25e-4;
     auto         pure_pd = make_simulator<2>(notched_glass_plate_case(false, 0.0075, 2e-5));
     pure_pd->run();
     auto coupled = make_simulator<2>(notched_glass_plate_case(true, 0.0075, 2e-5));
@@ -48,7 +48,7 @@ main(int argc, char **argv)
 
     const auto &reference = pure_pd->get_energy_history(), &history = coupled->get_energy_history();
     const auto  x_ref = reference.column("branch_0_x"), x = history.column("branch_0_x");
-    double      largest = 0;
+    double      largest   = 0;
     unsigned int compared = 0;
     for (unsigned int n = 0; n < x.size(); ++n)
       if (std::isfinite(x_ref[n]) || std::isfinite(x[n]))
@@ -63,15 +63,14 @@ main(int argc, char **argv)
     report("crack extension at 20 us, pure PD [m]", reference.column("crack_extension").back());
     check_below("largest |tip x coupled - pure PD| / delta, up to 20 us", largest / delta, 2.);
     check_below("|crack area coupled / pure PD - 1| at 20 us",
-                std::abs(history.column("crack_area").back() /
-                           reference.column("crack_area").back() -
-                         1.),
+                std::abs(
+                  history.column("crack_area").back() / reference.column("crack_area").back() - 1.),
                 0.2);
     check_below("broken bonds of the overlap and slave layer",
                 broken_coupled_bonds(*coupled->get_pd_zone()),
                 0.5);
 
-    auto        narrow  = make_simulator<2>(notched_glass_plate_case(true, 0.005, 4e-5));
+    auto        narrow = make_simulator<2>(notched_glass_plate_case(true, 0.005, 4e-5));
     std::string message;
     try
       {

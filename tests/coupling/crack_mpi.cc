@@ -1,4 +1,4 @@
-// A crack running through the coupled model on 2 ranks against 1 rank: the coupled case of
+// A crack running through the coupled model on 2 and 3 ranks against 1 rank: the coupled case of
 // coupling/coupled_crack (glass plate, notch, PD strip |y - 20 mm| <= 7.5 mm, force
 // blending) to 20 us, run on all ranks and again on rank 0 alone. The broken-bond counts
 // must be identical at every record (a bond to a ghost breaks on both ranks in the same
@@ -14,11 +14,11 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const std::string text = notched_glass_plate_case(true, 0.0075, 2e-5);
-    auto parallel = make_simulator<2>(text, MPI_COMM_WORLD);
+    const std::string text     = notched_glass_plate_case(true, 0.0075, 2e-5);
+    auto              parallel = make_simulator<2>(text, MPI_COMM_WORLD);
     parallel->run();
-    const auto broken = parallel->get_energy_history().column("broken_bonds");
-    const auto area   = parallel->get_energy_history().column("crack_area");
+    const auto broken            = parallel->get_energy_history().column("broken_bonds");
+    const auto area              = parallel->get_energy_history().column("crack_area");
     double     broken_difference = 0, area_difference = 0;
     if (is_root())
       {

@@ -33,8 +33,8 @@ namespace
       return std::min(1., std::max(0., (std::abs(x) - 0.4) / 0.1));
     };
     // Simpson's rule is exact for the quadratic alpha * N on a cell where alpha is linear.
-    const auto hat = [&](const double x) { return 1. - std::abs(x - x_node) / h; };
-    const double m = a + h / 2;
+    const auto   hat = [&](const double x) { return 1. - std::abs(x - x_node) / h; };
+    const double m   = a + h / 2;
     return h / 6 * (alpha(a) * hat(a) + 4 * alpha(m) * hat(m) + alpha(a + h) * hat(a + h));
   }
 } // namespace
@@ -64,7 +64,7 @@ main(int argc, char **argv)
         const double share_x = ((x > -1.2 + 1e-12 ? weighted_share(x - h, h, x) : 0.) +
                                 (x < 1.2 - 1e-12 ? weighted_share(x, h, x) : 0.)) /
                                h;
-        const double row = (std::abs(std::abs(y) - 0.04) < 1e-12) ? 0.5 : 1.;
+        const double row      = (std::abs(std::abs(y) - 0.04) < 1e-12) ? 0.5 : 1.;
         double       expected = share_x * row * full_row_mass;
         // The slaves with a mass: lattice sites (5 mm, from the corner (-1.2, -0.04)) with
         // 0.49 < |x| < 0.5.
@@ -76,9 +76,9 @@ main(int argc, char **argv)
               const double hat_y = std::max(0., 1. - std::abs(ys - y) / h);
               expected += hat_x * hat_y * (0.5 - std::abs(xs)) / 0.1 * 2700 * 0.005 * 0.005;
             }
-        fe_error = std::max(fe_error,
-                            std::abs(fe.lumped_mass().local_element(dofs[k]) - expected) /
-                              full_row_mass);
+        fe_error =
+          std::max(fe_error,
+                   std::abs(fe.lumped_mass().local_element(dofs[k]) - expected) / full_row_mass);
         if (std::abs(x) < 0.5)
           smallest_share = std::min(smallest_share, share_x);
       }

@@ -24,7 +24,8 @@ namespace
   {
     return std::string("set Dimension = 3\n"
                        "subsection Geometry\n  set Mesh file = ") +
-           PERIARLEQUIN_SOURCE_DIR "/tests/coupling/gmsh_block_3d.msh\nend\n"
+           PERIARLEQUIN_SOURCE_DIR
+           "/tests/coupling/gmsh_block_3d.msh\nend\n"
            "subsection Material\n  set Young's modulus = 200e9\n  set Poisson's ratio = 0.3\n"
            "  set Density = 7800\nend\n"
            "subsection Peridynamics\n  set Region = 0.012, 0.005, 0 : 0.028, 0.015, 0.01\n"

@@ -21,11 +21,11 @@
 //  - on 2 ranks the energy history (broken bonds included) equals 1 rank to 1e-10 of each
 //    column's magnitude (sums in another order), and bonds broke in that run.
 
-#include "../tests.h"
-
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 
@@ -50,9 +50,9 @@ namespace
   std::vector<std::pair<Point<2>, Point<2>>>
   hole_segments()
   {
-    std::ifstream                 file(mesh_file);
-    std::string                   line;
-    std::map<unsigned int, Point<2>> nodes;
+    std::ifstream                              file(mesh_file);
+    std::string                                line;
+    std::map<unsigned int, Point<2>>           nodes;
     std::vector<std::pair<Point<2>, Point<2>>> segments;
     while (std::getline(file, line))
       if (line == "$Nodes")
@@ -75,8 +75,8 @@ namespace
           for (unsigned int k = 0; k < n; ++k)
             {
               std::getline(file, line);
-              std::istringstream   fields(line);
-              unsigned int         id, type, n_tags, physical;
+              std::istringstream fields(line);
+              unsigned int       id, type, n_tags, physical;
               fields >> id >> type >> n_tags >> physical;
               std::vector<unsigned int> rest;
               unsigned int              value;
@@ -106,7 +106,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double dx = 3.75e-4, delta = 3 * dx, band = 0.008, E = 72e9, nu = 0.22, rho = 2440;
+    const double   dx = 3.75e-4, delta = 3 * dx, band = 0.008, E = 72e9, nu = 0.22, rho = 2440;
     const Point<2> pd_lower(0.035, 0.01), pd_upper(0.065, 0.04);
 
     auto simulator = make_simulator<2>(case_text());
@@ -114,8 +114,8 @@ main(int argc, char **argv)
     const auto &pd = *simulator->get_pd_zone();
 
     // Independent count of the sites that must hold a particle.
-    const auto         hole  = hole_segments();
-    const double       reach = (band + 2 * (delta + 0.5 * dx)) * (1 + 1e-10);
+    const auto         hole     = hole_segments();
+    const double       reach    = (band + 2 * (delta + 0.5 * dx)) * (1 + 1e-10);
     unsigned long long expected = 0;
     for (unsigned int i = 0; (i + 0.5) * dx < 0.1; ++i)
       for (unsigned int j = 0; (j + 0.5) * dx < 0.05; ++j)
@@ -159,8 +159,8 @@ main(int argc, char **argv)
     check_below("initiation time [s]", simulator->get_time(), 0.05 / wave_speed + 3e-6);
 
     // The hole's poles (top, bottom) and sides (left, right), radius 6 mm.
-    const Point<2> poles[2] = {Point<2>(0.05, 0.031), Point<2>(0.05, 0.019)};
-    const Point<2> sides[2] = {Point<2>(0.044, 0.025), Point<2>(0.056, 0.025)};
+    const Point<2> poles[2]  = {Point<2>(0.05, 0.031), Point<2>(0.05, 0.019)};
+    const Point<2> sides[2]  = {Point<2>(0.044, 0.025), Point<2>(0.056, 0.025)};
     const auto     x         = pd.reference_positions();
     const auto     damage    = pd.get_bonds().damage();
     double         from_pole = 0, nearest_side = std::numeric_limits<double>::max();
@@ -169,10 +169,9 @@ main(int argc, char **argv)
       if (damage[i] > 0)
         {
           ++n_damaged;
-          from_pole = std::max(from_pole,
-                               std::min(x[i].distance(poles[0]), x[i].distance(poles[1])));
-          nearest_side =
-            std::min({nearest_side, x[i].distance(sides[0]), x[i].distance(sides[1])});
+          from_pole =
+            std::max(from_pole, std::min(x[i].distance(poles[0]), x[i].distance(poles[1])));
+          nearest_side = std::min({nearest_side, x[i].distance(sides[0]), x[i].distance(sides[1])});
         }
     report("damaged particles at initiation", Utilities::MPI::sum(n_damaged, MPI_COMM_WORLD));
     check_below("at initiation, largest distance of damage from a pole / horizon",

@@ -8,11 +8,11 @@
 // Both are the same linear interpolation computed twice in round-off: tolerance 1e-12 of the
 // field scale (1 mm; times sqrt(rows) for the residual norm).
 
-#include "coupled_cases.h"
-
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/numerics/vector_tools_point_value.h>
+
+#include "coupled_cases.h"
 
 using namespace PeriArlequinTests;
 
@@ -44,7 +44,8 @@ main(int argc, char **argv)
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
       if (pd.is_slave(i))
         {
-          slave_error = std::max(slave_error, (pd.get_state().displacements()[i] - interpolated(i)).norm());
+          slave_error =
+            std::max(slave_error, (pd.get_state().displacements()[i] - interpolated(i)).norm());
           ++n_slaves;
         }
       else if (pd.blending_weights()[i] > 0)

@@ -33,10 +33,18 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    require_two_ranks();
-    const auto        text  = [&](const std::string &directory) {
-      return strip_case(
-               "weak", "energy", "diagonal", true, false, smooth_pulse, "0; 0", 2e-7, 6e-5, 1) +
+    require_several_ranks();
+    const auto text = [&](const std::string &directory) {
+      return strip_case("weak",
+                        "energy",
+                        "diagonal",
+                        true,
+                        false,
+                        smooth_pulse,
+                        "0; 0",
+                        2e-7,
+                        6e-5,
+                        1) +
              "subsection Output\n  set Directory = " + directory +
              "\n  set Output interval = 100\n  set Sample line = -1.2, 0 : 1.2, 0\nend\n";
     };
@@ -46,7 +54,7 @@ main(int argc, char **argv)
     make_simulator<2>(text("samples_1_rank"), MPI_COMM_SELF)->run();
 
     double       difference = 0, largest = 0;
-    unsigned int n_rows     = 0;
+    unsigned int n_rows = 0;
     for (const std::string step : {"000000", "000100", "000200", "000300"})
       {
         const auto parallel = read_csv("samples_2_ranks/solution_line_" + step + ".csv");
@@ -61,7 +69,7 @@ main(int argc, char **argv)
                                    " is another point on 2 ranks"));
             for (unsigned int c = 3; c < 5; ++c)
               {
-                largest    = std::max(largest, std::abs(std::stod(serial[r][c])));
+                largest = std::max(largest, std::abs(std::stod(serial[r][c])));
                 difference =
                   std::max(difference,
                            std::abs(std::stod(parallel[r][c]) - std::stod(serial[r][c])));

@@ -28,8 +28,9 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double r   = 1.;
-    const double mts = 2. * std::atan((1. - std::sqrt(1. + 8. * r * r)) / (4. * r)) * 180. / numbers::PI;
+    const double r = 1.;
+    const double mts =
+      2. * std::atan((1. - std::sqrt(1. + 8. * r * r)) / (4. * r)) * 180. / numbers::PI;
     std::array<double, 2> angle, g_init;
     for (const bool coupled : {false, true})
       {

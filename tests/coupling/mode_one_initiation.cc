@@ -47,16 +47,24 @@ main(int argc, char **argv)
       make_simulator<2>(mixed_mode_case(false, 64, 3, 16, 0, 3e-4, 4.2e-4, "critical bond energy"));
     simulator->run();
     const auto &history = simulator->get_energy_history();
-    check("bond energy criterion: G_init / G0", history.column("initiation_G").back() / 36e3, 1., 0.1);
+    check("bond energy criterion: G_init / G0",
+          history.column("initiation_G").back() / 36e3,
+          1.,
+          0.1);
     const auto area = history.column("crack_area"), total = history.column("total_energy");
     const auto at = [&](const double a) {
       const auto k = std::find_if(area.begin(), area.end(), [a](const double x) { return x >= a; });
-      AssertThrow(k != area.end(), ExcMessage("the crack did not grow by " + std::to_string(a) + " m"));
+      AssertThrow(k != area.end(),
+                  ExcMessage("the crack did not grow by " + std::to_string(a) + " m"));
       return k - area.begin();
     };
-    const auto begin = at(1e-3), end = at(5e-3);
+    const auto   begin = at(1e-3), end = at(5e-3);
     const double dissipated = (total[begin] - total[end]) / (area[end] - area[begin]);
-    check_above("bond energy criterion: dissipated energy per new crack area / G0 >= 0.95", dissipated / 36e3, 0.95);
-    check_below("bond energy criterion: dissipated energy per new crack area / G0 <= 1.15", dissipated / 36e3, 1.15);
+    check_above("bond energy criterion: dissipated energy per new crack area / G0 >= 0.95",
+                dissipated / 36e3,
+                0.95);
+    check_below("bond energy criterion: dissipated energy per new crack area / G0 <= 1.15",
+                dissipated / 36e3,
+                1.15);
   });
 }

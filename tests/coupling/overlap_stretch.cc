@@ -24,10 +24,10 @@
 // branching case. Variations: FE/PD size ratios 8 and 4 (cells 5 and 2.5 mm), overlaps of
 // 10 and 12.5 mm (2 to 5 cells).
 
-#include "coupled_cases.h"
-
 #include <periarlequin/coupling/interpolation_operator.h>
 #include <periarlequin/pd/bond_families.h>
+
+#include "coupled_cases.h"
 
 using namespace PeriArlequinTests;
 using namespace PeriArlequin;
@@ -46,8 +46,8 @@ namespace
   double
   band_stretch(const PDZone<2> &pd, ArrayView<const Tensor<1, 2>> u, const double half_strip)
   {
-    const BondFamilies<2> &bonds = pd.get_bonds();
-    const auto             x     = pd.reference_positions();
+    const BondFamilies<2> &bonds   = pd.get_bonds();
+    const auto             x       = pd.reference_positions();
     double                 largest = 0;
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
@@ -57,8 +57,8 @@ namespace
               !in_band(x[j], half_strip))
             continue;
           const auto &entry = bonds.stencil[bonds.stencil_index[n]];
-          largest = std::max(largest,
-                             BondFamilies<2>::extension(entry, u[j] - u[i]).first / entry.length);
+          largest =
+            std::max(largest, BondFamilies<2>::extension(entry, u[j] - u[i]).first / entry.length);
         }
     return largest;
   }
@@ -70,8 +70,15 @@ namespace
                        const double       half_strip,
                        const std::string &blending)
   {
-    auto simulator = make_simulator<2>(glass_plate_case(
-      coupled, 6.25e-4, cell, half_strip, 0.015 - half_strip, 2e6, 5e-8, 3e-5, blending));
+    auto simulator = make_simulator<2>(glass_plate_case(coupled,
+                                                        6.25e-4,
+                                                        cell,
+                                                        half_strip,
+                                                        0.015 - half_strip,
+                                                        2e6,
+                                                        5e-8,
+                                                        3e-5,
+                                                        blending));
     simulator->setup();
     const PDZone<2>          &pd = *simulator->get_pd_zone();
     InterpolationOperator<2>  interpolation;
@@ -86,14 +93,16 @@ namespace
     while (simulator->get_step_number() < simulator->get_n_steps())
       {
         simulator->advance();
-        largest_pd = std::max(largest_pd, band_stretch(pd, pd.get_state().displacements(), half_strip));
+        largest_pd =
+          std::max(largest_pd, band_stretch(pd, pd.get_state().displacements(), half_strip));
         if (coupled)
           {
             const auto &u = simulator->get_displacement();
             u.update_ghost_values();
             for (unsigned int r = 0; r < band.size(); ++r)
               fe_field[band[r]] = interpolation.interpolate(u, r);
-            largest_fe = std::max(largest_fe, band_stretch(pd, make_array_view(fe_field), half_strip));
+            largest_fe =
+              std::max(largest_fe, band_stretch(pd, make_array_view(fe_field), half_strip));
           }
       }
     return {largest_pd, largest_fe};

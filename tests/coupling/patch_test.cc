@@ -36,10 +36,10 @@ namespace
          << multiplier_spacing << "\n  end\nend\n";
     auto simulator = make_simulator<2>(text.str());
     simulator->run();
-    const auto  &fe   = simulator->get_fe_zone();
-    const auto  &mass = fe.lumped_mass();
-    const auto  &a    = simulator->get_acceleration();
-    double       largest = 0, sum = 0;
+    const auto &fe      = simulator->get_fe_zone();
+    const auto &mass    = fe.lumped_mass();
+    const auto &a       = simulator->get_acceleration();
+    double      largest = 0, sum = 0;
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       {
         const double f = std::abs(mass.local_element(i) * a.local_element(i));
@@ -69,9 +69,8 @@ main(int argc, char **argv)
     const double h = 0.02, plate_height = 0.4;
     for (const double spacing : {1., 2.})
       {
-        const std::string mesh =
-          spacing == 1 ? "FE-node lambda-mesh" : "lambda-mesh of 2 FE cells";
-        const auto force = ghost_forces(0.04, "force", spacing);
+        const std::string mesh = spacing == 1 ? "FE-node lambda-mesh" : "lambda-mesh of 2 FE cells";
+        const auto        force = ghost_forces(0.04, "force", spacing);
         check_below(mesh + ", force blending, overlap 2 cells: max ghost force / (sigma H)",
                     force.first,
                     1e-10);
@@ -80,7 +79,7 @@ main(int argc, char **argv)
         double previous = 0;
         for (const double width : {0.04, 0.06, 0.08, 0.1})
           {
-            const std::string cells = std::to_string(static_cast<int>(std::round(width / h)));
+            const std::string cells     = std::to_string(static_cast<int>(std::round(width / h)));
             const auto        energy    = ghost_forces(width, "energy", spacing);
             const double      continuum = h * h / (width * plate_height);
             const double      bound     = spacing == 1 ? 0.1 : 0.2;

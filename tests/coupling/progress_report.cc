@@ -14,12 +14,20 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    require_two_ranks();
+    require_several_ranks();
     check_below(
       "weak coupling with progress lines every 1 ms: 2 ranks vs 1 rank, max relative difference",
       parallel_vs_serial_history_difference<2>(
-        strip_case(
-          "weak", "energy", "diagonal", true, false, smooth_pulse, "0; 0", 2e-7, 2e-4, 10) +
+        strip_case("weak",
+                   "energy",
+                   "diagonal",
+                   true,
+                   false,
+                   smooth_pulse,
+                   "0; 0",
+                   2e-7,
+                   2e-4,
+                   10) +
           "subsection Output\n  set Progress interval = 0.001\nend\n",
         "weak"),
       1e-10);

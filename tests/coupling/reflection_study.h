@@ -69,9 +69,7 @@ namespace PeriArlequinTests
         check_above("strict + damping: excess over the reference, above weak + damping's",
                     strict - weak,
                     0.);
-        check_above("strict + damping: excess over the reference, below bad's",
-                    bad - strict,
-                    0.);
+        check_above("strict + damping: excess over the reference, below bad's", bad - strict, 0.);
       }
   }
 } // namespace PeriArlequinTests

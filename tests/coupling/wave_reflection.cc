@@ -28,9 +28,9 @@
 // On 2 ranks (the .mpirun=2 output): lambda = 6 h, R and T equal to 1 rank within 1e-9
 // relative (round-off of different sums).
 
-#include "../tests.h"
-
 #include <periarlequin/postprocess/wave_reflection.h>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 
@@ -67,8 +67,12 @@ main(int argc, char **argv)
             r                 = std::abs(parallel.reflected / serial.reflected - 1);
             t                 = std::abs(parallel.transmitted / serial.transmitted - 1);
           }
-        check_below("lambda = 6 h: R, 2 ranks / 1 rank - 1", Utilities::MPI::max(r, MPI_COMM_WORLD), 1e-9);
-        check_below("lambda = 6 h: T, 2 ranks / 1 rank - 1", Utilities::MPI::max(t, MPI_COMM_WORLD), 1e-9);
+        check_below("lambda = 6 h: R, 2 ranks / 1 rank - 1",
+                    Utilities::MPI::max(r, MPI_COMM_WORLD),
+                    1e-9);
+        check_below("lambda = 6 h: T, 2 ranks / 1 rank - 1",
+                    Utilities::MPI::max(t, MPI_COMM_WORLD),
+                    1e-9);
         return;
       }
     const std::string undamped = "set Method = weak\nset Fine-scale damping = false\n";

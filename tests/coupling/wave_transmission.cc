@@ -37,11 +37,11 @@ namespace
     double      end_time, right_end;
   };
 
-  const Pulse outgoing{smooth_pulse, "0; 0", 1.6e-4, 1.2};
-  const Pulse incoming{"if(abs(x-1) < 0.2, 1e-4*cos(pi*(x-1)/0.4)^2, 0); "
-                       "if(abs(x-1) < 0.2, 0.3*1e-4*pi/0.4*sin(2*pi*(x-1)/0.4)*y, 0)",
+  const Pulse  outgoing{smooth_pulse, "0; 0", 1.6e-4, 1.2};
+  const Pulse  incoming{"if(abs(x-1) < 0.2, 1e-4*cos(pi*(x-1)/0.4)^2, 0); "
+                        "if(abs(x-1) < 0.2, 0.3*1e-4*pi/0.4*sin(2*pi*(x-1)/0.4)*y, 0)",
                        "if(abs(x-1) < 0.2, -5055*1e-4*pi/0.4*sin(2*pi*(x-1)/0.4), 0); "
-                       "if(abs(x-1) < 0.2, 0.3*5055*2e-4*pi^2/0.16*cos(2*pi*(x-1)/0.4)*y, 0)",
+                        "if(abs(x-1) < 0.2, 0.3*5055*2e-4*pi^2/0.16*cos(2*pi*(x-1)/0.4)*y, 0)",
                        2.0e-4,
                        1.6};
   const double time_step = 5e-8;
@@ -86,7 +86,7 @@ namespace
   std::pair<double, double>
   drift(const PeriArlequin::Simulator<2> &simulator)
   {
-    const auto total = simulator.get_energy_history().column("total_energy");
+    const auto total  = simulator.get_energy_history().column("total_energy");
     double     change = 0, rise = 0;
     for (unsigned int n = 1; n < total.size(); ++n)
       {
@@ -110,7 +110,7 @@ main(int argc, char **argv)
     double undamped_rise = 0;
     for (const std::string method : {"strict", "weak"})
       {
-        const auto   coupled = run(method, "energy", false);
+        const auto coupled = run(method, "energy", false);
         if (method == "weak")
           undamped_rise = drift(*coupled).second;
         const double left = final_pure_pd_energy(*coupled) / initial;

@@ -29,8 +29,8 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double L = 0.1, E = 200e9, rho = 7800, v0 = 1, dt = 5e-8, T = 60e-6;
-    const double c = std::sqrt(E / rho), duration = 2 * L / c;
+    const double       L = 0.1, E = 200e9, rho = 7800, v0 = 1, dt = 5e-8, T = 60e-6;
+    const double       c = std::sqrt(E / rho), duration = 2 * L / c;
     std::ostringstream prm;
     prm << std::setprecision(17) << "set Dimension = 2\n"
         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " << L
@@ -69,7 +69,7 @@ main(int argc, char **argv)
     const double energy0  = fe.kinetic_energy();
     check("initial momentum / (M v0)", p0 / (mass * v0), 1., 1e-12);
 
-    int    first = -1, last = -1;
+    int first = -1, last = -1;
     // Set-up computed the accelerations at t = 0, contact included.
     double impulse = 0, previous_force = contact.total_force()[0];
 
@@ -88,13 +88,19 @@ main(int argc, char **argv)
       }
     const auto [p1, m1] = momentum();
     report("contact steps", last - first + 1);
-    check("momentum change - contact impulse, / (M v0)", (p1 - p0 - impulse) / (mass * v0), 0., 1e-10);
+    check("momentum change - contact impulse, / (M v0)",
+          (p1 - p0 - impulse) / (mass * v0),
+          0.,
+          1e-10);
     check("contact duration / (2 L / c)", (last - first + 1) * dt / duration, 1., 0.01);
     check_above("time without contact at the end of the run [s] >= 1e-5", T - last * dt, 1e-5);
     check("rebound velocity / -v0", p1 / mass / -v0, 1., 0.02);
-    const double energy =
-      fe.kinetic_energy() + fe.strain_energy() - fe.external_work();
-    check_below("(kinetic + strain - contact work) / initial energy <= 1.001", energy / energy0, 1.001);
-    check_above("(kinetic + strain - contact work) / initial energy >= 0.995", energy / energy0, 0.995);
+    const double energy = fe.kinetic_energy() + fe.strain_energy() - fe.external_work();
+    check_below("(kinetic + strain - contact work) / initial energy <= 1.001",
+                energy / energy0,
+                1.001);
+    check_above("(kinetic + strain - contact work) / initial energy >= 0.995",
+                energy / energy0,
+                0.995);
   });
 }

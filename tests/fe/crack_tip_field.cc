@@ -15,8 +15,6 @@
 //    sides) against its former boundary expression written out in muparser (the paper's
 //    eq. 82 transcribed independently), at points on the sides: 1e-12 relative.
 
-#include "../tests.h"
-
 #include <periarlequin/base/crack_tip_field.h>
 
 #include <deal.II/base/function_parser.h>
@@ -24,6 +22,8 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 using namespace PeriArlequin;
@@ -52,7 +52,7 @@ namespace
     const double lambda = m.planar_model == Parameters::PlanarModel::plane_strain ?
                             E * nu / ((1 + nu) * (1 - 2 * nu)) :
                             E * nu / (1 - nu * nu);
-    const double trace = grad[0][0] + grad[1][1];
+    const double trace  = grad[0][0] + grad[1][1];
     Stress       sigma;
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = 0; j < 2; ++j)
@@ -65,10 +65,11 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const Point<2> tip(0.01, -0.02);
-    const double   beta = M_PI / 6, psi = M_PI / 6, r = 0.005, t = 2e-3, K = 1e9 * t;
+    const Point<2>     tip(0.01, -0.02);
+    const double       beta = M_PI / 6, psi = M_PI / 6, r = 0.005, t = 2e-3, K = 1e9 * t;
     const Tensor<1, 2> n({-std::sin(beta), std::cos(beta)}), e({std::cos(beta), std::sin(beta)});
-    for (const auto model : {Parameters::PlanarModel::plane_strain, Parameters::PlanarModel::plane_stress})
+    for (const auto model :
+         {Parameters::PlanarModel::plane_strain, Parameters::PlanarModel::plane_stress})
       {
         Parameters::Material material;
         material.youngs_modulus = 29e9;
@@ -96,7 +97,8 @@ main(int argc, char **argv)
                 Point<2> a = x, b = x;
                 a[d] += 10 * h;
                 b[d] -= 10 * h;
-                const Stress difference = stress(field, a, h, material) - stress(field, b, h, material);
+                const Stress difference =
+                  stress(field, a, h, material) - stress(field, b, h, material);
                 for (unsigned int i = 0; i < 2; ++i)
                   divergence[i] += difference[i][d] / (20 * h);
               }
@@ -109,10 +111,10 @@ main(int argc, char **argv)
         for (unsigned int k = 0; k < 2; ++k)
           for (const double side : {-1., 1.})
             {
-              const Stress face = stress(field, at(side * (M_PI - (k == 0 ? 1e-2 : 1e-3))), h, material);
-              faces[k] = std::max({faces[k],
-                                   std::abs(n * (face * n)) / scale,
-                                   std::abs(e * (face * n)) / scale});
+              const Stress face =
+                stress(field, at(side * (M_PI - (k == 0 ? 1e-2 : 1e-3))), h, material);
+              faces[k] = std::max(
+                {faces[k], std::abs(n * (face * n)) / scale, std::abs(e * (face * n)) / scale});
             }
         report(name + ": crack-face traction / |sigma ahead|, 1e-2 rad from the faces", faces[0]);
         check_below(name + ": crack-face traction / |sigma ahead|, 1e-3 rad from the faces",
@@ -157,7 +159,7 @@ main(int argc, char **argv)
               0);
         for (unsigned int k = 0; k < 9; ++k)
           {
-            const double s = -0.03125 + k * 0.0078125, a = 0.03125;
+            const double   s = -0.03125 + k * 0.0078125, a = 0.03125;
             const Point<2> x = b == 0 ? Point<2>(-a, s) :
                                b == 1 ? Point<2>(a, s) :
                                b == 2 ? Point<2>(s, -a) :
@@ -174,6 +176,8 @@ main(int argc, char **argv)
               }
           }
       }
-    check_below("fe_crack_tip_kfield_2d.prm vs the muparser eq. 82, relative", worst / largest, 1e-12);
+    check_below("fe_crack_tip_kfield_2d.prm vs the muparser eq. 82, relative",
+                worst / largest,
+                1e-12);
   });
 }

@@ -47,15 +47,15 @@ template <int dim>
 double
 discrete_energy(const PeriArlequin::Simulator<dim> &simulator)
 {
-  const auto &fe_zone = simulator.get_fe_zone();
-  const auto &mass    = fe_zone.lumped_mass();
+  const auto                                &fe_zone = simulator.get_fe_zone();
+  const auto                                &mass    = fe_zone.lumped_mass();
   LinearAlgebra::distributed::Vector<double> force;
   fe_zone.initialize_vector(force);
   fe_zone.compute_internal_force(simulator.get_displacement(), force);
   double a_M_a = 0;
   for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
     a_M_a += force.local_element(i) * force.local_element(i) / mass.local_element(i);
-  a_M_a = Utilities::MPI::sum(a_M_a, MPI_COMM_WORLD);
+  a_M_a           = Utilities::MPI::sum(a_M_a, MPI_COMM_WORLD);
   const double dt = simulator.get_time_step();
   return fe_zone.kinetic_energy() + 0.5 * (simulator.get_displacement() * force) -
          dt * dt / 8 * a_M_a;

@@ -54,7 +54,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    require_two_ranks();
+    require_several_ranks();
     compare_one_and_two_ranks<2>();
     compare_one_and_two_ranks<3>();
   });

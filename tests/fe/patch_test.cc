@@ -12,9 +12,9 @@
 // energy to 1e-11 relative: it is the sum over the boundary nodes of u.f (the interior forces
 // cancel to round-off); measured 3e-15 (3D Q1) to 5.5e-13 (2D Q2).
 
-#include "../tests.h"
-
 #include <tbb/task_arena.h>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 
@@ -82,7 +82,7 @@ patch_test(const unsigned int degree, const std::string &model, const bool tract
 
   auto simulator = make_simulator<dim>(prm.str());
   simulator->setup();
-  const auto &fe_zone = simulator->get_fe_zone();
+  const auto                                &fe_zone = simulator->get_fe_zone();
   LinearAlgebra::distributed::Vector<double> internal, external;
   fe_zone.initialize_vector(internal);
   fe_zone.initialize_vector(external);

@@ -39,8 +39,8 @@ namespace
   void
   collide(const std::string &mesh)
   {
-    const double L = 0.05, A = 0.004, E = 200e9, rho = 7800, v0 = 1, dt = 5e-8, T = 70e-6;
-    const double c = std::sqrt(E / rho), duration = 2 * L / c, gap = 1e-6;
+    const double       L = 0.05, A = 0.004, E = 200e9, rho = 7800, v0 = 1, dt = 5e-8, T = 70e-6;
+    const double       c = std::sqrt(E / rho), duration = 2 * L / c, gap = 1e-6;
     std::ostringstream prm;
     prm << std::setprecision(17) << "set Dimension = 2\n"
         << "subsection Geometry\n  set Mesh file = " PERIARLEQUIN_SOURCE_DIR "/tests/fe/" << mesh
@@ -103,19 +103,25 @@ namespace
           0.,
           1e-10);
     const unsigned int quarter = forces.size() / 4;
-    const double       middle  = std::accumulate(forces.begin() + quarter, forces.end() - quarter, 0.) /
+    const double middle = std::accumulate(forces.begin() + quarter, forces.end() - quarter, 0.) /
                           (forces.size() - 2 * quarter);
     check(mesh + ": mean contact force over the middle half / (rho c v0 A / 2)",
           -middle / (rho * c * v0 * A / 2),
           1.,
           0.01);
     check(mesh + ": contact duration / (2 L / c)", (last - first + 1) * dt / duration, 1., 0.02);
-    check_above(mesh + ": time without contact at the end of the run [s] >= 1.5e-5", T - last * dt, 1.5e-5);
+    check_above(mesh + ": time without contact at the end of the run [s] >= 1.5e-5",
+                T - last * dt,
+                1.5e-5);
     check(mesh + ": striker velocity after / v0", end[0] / end[1] / v0, 0., 0.02);
     check(mesh + ": target velocity after / v0", end[2] / end[3] / v0, 1., 0.02);
     const double energy = fe.kinetic_energy() + fe.strain_energy() - fe.external_work();
-    check_below(mesh + ": (kinetic + strain - contact work) / initial energy <= 1.001", energy / energy0, 1.001);
-    check_above(mesh + ": (kinetic + strain - contact work) / initial energy >= 0.999", energy / energy0, 0.999);
+    check_below(mesh + ": (kinetic + strain - contact work) / initial energy <= 1.001",
+                energy / energy0,
+                1.001);
+    check_above(mesh + ": (kinetic + strain - contact work) / initial energy >= 0.999",
+                energy / energy0,
+                0.999);
     check_below(mesh + ": energy lost at the contact / initial energy <= 0.01",
                 fe.external_work() / -energy0,
                 0.01);

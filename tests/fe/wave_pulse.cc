@@ -46,8 +46,9 @@ namespace
                           "(1+a2*cos(2*pi*(x-x0+w1/2)/w2)), 0)";
     return "subsection Initial conditions\n  set Model = function\n  subsection function\n"
            "    subsection Displacement\n      set Function constants = " +
-           pulse_constants + "\n      set Function expression = " +
-           (component == "x" ? d + "; 0" : "0; " + d) + "\n    end\n  end\nend\n";
+           pulse_constants +
+           "\n      set Function expression = " + (component == "x" ? d + "; 0" : "0; " + d) +
+           "\n    end\n  end\nend\n";
   }
 
   void
@@ -58,8 +59,8 @@ namespace
     pulse->setup();
     function->setup();
 
-    auto fe_difference = pulse->get_fe_zone().get_state().displacement;
-    const auto &fe_reference = function->get_fe_zone().get_state().displacement;
+    auto        fe_difference = pulse->get_fe_zone().get_state().displacement;
+    const auto &fe_reference  = function->get_fe_zone().get_state().displacement;
     fe_difference -= fe_reference;
     const double fe_scale = fe_reference.linfty_norm();
     AssertThrow(fe_scale > 3e-4, ExcMessage("the pulse does not reach the FE nodes"));
@@ -67,9 +68,9 @@ namespace
                 fe_difference.linfty_norm() / fe_scale,
                 1e-13);
 
-    const auto u = pulse->get_pd_zone()->get_state().displacements();
+    const auto u         = pulse->get_pd_zone()->get_state().displacements();
     const auto reference = function->get_pd_zone()->get_state().displacements();
-    const auto v = pulse->get_pd_zone()->get_state().velocities();
+    const auto v         = pulse->get_pd_zone()->get_state().velocities();
     double     pd_scale = 0, pd_difference = 0, speed = 0;
     for (unsigned int i = 0; i < pulse->get_pd_zone()->n_owned_particles(); ++i)
       {

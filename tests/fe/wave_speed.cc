@@ -14,12 +14,12 @@ using namespace PeriArlequinTests;
 
 template <int dim>
 double
-centroid_right_of(const PeriArlequin::Simulator<dim> &simulator,
+centroid_right_of(const PeriArlequin::Simulator<dim>               &simulator,
                   const LinearAlgebra::distributed::Vector<double> &coordinate,
                   const LinearAlgebra::distributed::Vector<double> &is_x,
                   const double                                      x0)
 {
-  const auto &u = simulator.get_displacement();
+  const auto &u          = simulator.get_displacement();
   double      moments[2] = {0, 0};
   for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
     if (is_x.local_element(i) > 0.5 && coordinate.local_element(i) > x0)
@@ -27,7 +27,9 @@ centroid_right_of(const PeriArlequin::Simulator<dim> &simulator,
         moments[0] += u.local_element(i) * coordinate.local_element(i);
         moments[1] += u.local_element(i);
       }
-  Utilities::MPI::sum(ArrayView<const double>(moments, 2), MPI_COMM_WORLD, ArrayView<double>(moments, 2));
+  Utilities::MPI::sum(ArrayView<const double>(moments, 2),
+                      MPI_COMM_WORLD,
+                      ArrayView<double>(moments, 2));
   return moments[0] / moments[1];
 }
 
@@ -35,7 +37,7 @@ template <int dim>
 void
 measure_wave_speed()
 {
-  const double x0 = dim == 2 ? 2.25 : 2.5;
+  const double       x0 = dim == 2 ? 2.25 : 2.5;
   std::ostringstream prm;
   prm << "set Dimension = " << dim << "\n"
       << "subsection Geometry\n"
@@ -63,9 +65,8 @@ measure_wave_speed()
   LinearAlgebra::distributed::Vector<double> coordinate, is_x;
   dof_coordinates(simulator->get_fe_zone(), coordinate, is_x);
 
-  const auto &material = simulator->get_fe_zone().get_material();
-  const double E = material.youngs_modulus, nu = material.poissons_ratio,
-               rho = material.density;
+  const auto  &material = simulator->get_fe_zone().get_material();
+  const double E = material.youngs_modulus, nu = material.poissons_ratio, rho = material.density;
   const double expected =
     dim == 2 ? std::sqrt(E / (rho * (1 - nu * nu))) :
                std::sqrt((material.bulk_modulus() + 4. / 3. * material.shear_modulus()) / rho);
@@ -83,7 +84,10 @@ measure_wave_speed()
         c2 = centroid_right_of(*simulator, coordinate, is_x, x0), s2 = t;
     }
   const double measured = (c2 - c1) / (s2 - s1);
-  check(std::to_string(dim) + "D longitudinal wave speed / analytic", measured / expected, 1., 0.01);
+  check(std::to_string(dim) + "D longitudinal wave speed / analytic",
+        measured / expected,
+        1.,
+        0.01);
 }
 
 int

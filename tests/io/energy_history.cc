@@ -38,7 +38,10 @@ main(int argc, char **argv)
     history.add_value("b", 4.);
     history.add_value("a", 3.);
     history.end_row();
-    check("column b of two rows given in another order, second value", history.column("b")[1], 4., 0.);
+    check("column b of two rows given in another order, second value",
+          history.column("b")[1],
+          4.,
+          0.);
     check("column a, second value", history.column("a")[1], 3., 0.);
 
     check("a row without column b refused (1 = yes)",

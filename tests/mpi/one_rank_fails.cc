@@ -10,7 +10,7 @@ main(int argc, char **argv)
 {
   using namespace PeriArlequinTests;
   return run_test(argc, argv, [] {
-    require_two_ranks();
+    require_several_ranks();
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 1)
       check_below("deliberately failing check on rank 1", 1., 0.);
     MPI_Barrier(MPI_COMM_WORLD);

@@ -1,5 +1,6 @@
 // LPS under an affine displacement d = G x, particles with a full horizon:
-//  - zero net force on particles more than two horizons inside (relative to the largest force on the free surface, 1e-10: round-off);
+//  - zero net force on particles more than two horizons inside (relative to the largest force on
+//  the free surface, 1e-10: round-off);
 //  - under a pure dilatation (equi-biaxial in plane stress, equi-triaxial in 3D) the strain
 //    energy density equals the classical 1/2 sigma:eps to 1e-10 (it is exact: e = eps x);
 //  - under uniaxial strain and shear it equals 1/2 sigma:eps times the lattice quadrature
@@ -18,18 +19,19 @@ using namespace PeriArlequinTests;
 
 template <int dim>
 void
-check_affine(const double       m,
-             const std::string &model,
-             const std::string &name,
+check_affine(const double          m,
+             const std::string    &model,
+             const std::string    &name,
              const Tensor<2, dim> &G,
-             const double       expected_ratio,
-             const double       tolerance)
+             const double          expected_ratio,
+             const double          tolerance)
 {
   const double dx = 1e-3, E = 69e9, nu = 0.3, mu = E / (2 * (1 + nu));
   const double lambda = dim == 2 && model == "plane stress" ? E * nu / (1 - nu * nu) :
                                                               E * nu / ((1 + nu) * (1 - 2 * nu));
   const SymmetricTensor<2, dim> strain = symmetrize(G);
-  const double classical = 0.5 * (lambda * trace(strain) * trace(strain) + 2 * mu * strain * strain);
+  const double                  classical =
+    0.5 * (lambda * trace(strain) * trace(strain) + 2 * mu * strain * strain);
 
   // A block of 25 (2D) or 20 (3D) lattice spacings; cells 5 dx wide hold the horizon.
   const unsigned int n = dim == 2 ? 25 : 20;
@@ -47,7 +49,8 @@ check_affine(const double       m,
     }
   prm << "set Dimension = " << dim << "\n"
       << "subsection Geometry\n  set Lower corner = " << (dim == 2 ? "0, 0" : "0, 0, 0")
-      << "\n  set Upper corner = " << box_text<dim>(upper, upper).substr(box_text<dim>(upper, upper).find(':') + 2)
+      << "\n  set Upper corner = "
+      << box_text<dim>(upper, upper).substr(box_text<dim>(upper, upper).find(':') + 2)
       << "\n  set Subdivisions = " << (dim == 2 ? "5, 5" : "4, 4, 4") << "\nend\n"
       << "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
       << "  set Two-dimensional model = " << model << "\nend\n"
@@ -63,7 +66,7 @@ check_affine(const double       m,
 
   // The force on a particle involves the dilatations of its neighbours: it sees no surface
   // if both its family and its neighbours' families are full.
-  const double reach = 2 * (m * dx + 0.5 * dx);
+  const double reach          = 2 * (m * dx + 0.5 * dx);
   double       interior_force = 0, largest_force = 0, energy = 0;
   unsigned int n_interior = 0;
   for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
@@ -83,13 +86,18 @@ check_affine(const double       m,
   const std::string title = std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") +
                             "m = " + std::to_string(m).substr(0, 5) + " " + name;
   report(title + ": interior particles", n_interior);
-  check_below(title + ": max interior |force| / max surface |force|", interior_force / largest_force, 1e-10);
+  check_below(title + ": max interior |force| / max surface |force|",
+              interior_force / largest_force,
+              1e-10);
   check(title + ": W_PD / W_classical", energy / classical, expected_ratio, tolerance);
 }
 
 template <int dim>
 void
-check_model(const double m, const double uniaxial, const double shear, const std::string &model = "plane stress")
+check_model(const double       m,
+            const double       uniaxial,
+            const double       shear,
+            const std::string &model = "plane stress")
 {
   const double   eps = 1e-7;
   Tensor<2, dim> dilatation, uniaxial_strain, shear_strain;

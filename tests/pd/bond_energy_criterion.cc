@@ -29,8 +29,10 @@ energy_split(const std::string &model)
 
   const auto         &bonds = pd.get_bonds();
   std::vector<double> pair_energy;
-  pd.get_material_model().compute_pair_energies(
-    bonds, pd.get_state().displacements(), pd.particle_scalars(), pair_energy);
+  pd.get_material_model().compute_pair_energies(bonds,
+                                                pd.get_state().displacements(),
+                                                pd.particle_scalars(),
+                                                pair_energy);
   double sum = 0;
   for (unsigned int i = 0; i < bonds.n_owned; ++i)
     for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
@@ -71,18 +73,29 @@ single_bond(const double sign)
   const double w_c         = G0 / cut_per_unit_area<dim>(dx, delta);
   const double e_c         = std::sqrt(w_c * dx * dx * bond_volume / stiffness);
   const double U = 2 * e_c, T = 1e-4;
-  auto simulator = make_simulator<dim>(single_bond_case<dim>(
-    "plane strain", "  set Fracture criterion = critical bond energy\n", G0, sign * U, T));
+  auto         simulator =
+    make_simulator<dim>(single_bond_case<dim>("plane strain",
+                                              "  set Fracture criterion = critical bond energy\n",
+                                              G0,
+                                              sign * U,
+                                              T));
   simulator->setup();
-  const auto run = run_single_bond(*simulator, sign * U, T, [&](const double e) {
+  const auto        run = run_single_bond(*simulator, sign * U, T, [&](const double e) {
     return e > 0 && stiffness * e * e / (dx * dx * bond_volume) >= w_c;
   });
-  const std::string title = std::to_string(dim) + "D single bond " + (sign > 0 ? "pulled" : "pushed");
+  const std::string title =
+    std::to_string(dim) + "D single bond " + (sign > 0 ? "pulled" : "pushed");
   if (sign > 0)
     {
       report(title + ": expected breaking step", run.expected_step);
-      check(title + ": breaking step - first step with w >= w_c", run.breaking_step - run.expected_step, 0, 0);
-      check(title + ": bond stays broken after the stretch falls (1 = yes)", run.stays_broken, 1, 0);
+      check(title + ": breaking step - first step with w >= w_c",
+            run.breaking_step - run.expected_step,
+            0,
+            0);
+      check(title + ": bond stays broken after the stretch falls (1 = yes)",
+            run.stays_broken,
+            1,
+            0);
     }
   else
     check(title + ": breaking step (-1: never)", run.breaking_step, -1, 0);

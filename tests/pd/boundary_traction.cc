@@ -75,8 +75,7 @@ main(int argc, char **argv)
         auto simulator = make_simulator<2>(plate(coupled));
         simulator->run();
         const double expected = force * simulator->get_time();
-        check_below(std::string(coupled ? "coupled" : "pure PD") +
-                      ": |y momentum / (F t) - 1|",
+        check_below(std::string(coupled ? "coupled" : "pure PD") + ": |y momentum / (F t) - 1|",
                     std::abs(momentum_y(*simulator) / expected - 1.),
                     1e-10);
       }

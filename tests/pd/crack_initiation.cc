@@ -15,11 +15,11 @@
 //    range (1 to 5 horizons, 3 to 15 mm) holds the pairs from 3 to 14 mm, 24 particles.
 // The same on every rank (the tracker works on gathered particles): run on one.
 
-#include "../tests.h"
-
 #include <periarlequin/postprocess/crack_diagnostics.h>
 
 #include <cmath>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 using namespace PeriArlequin;
@@ -28,8 +28,8 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    using Particle       = CrackInitiation<2>::CrackedParticle;
-    const double horizon = 3e-3;
+    using Particle             = CrackInitiation<2>::CrackedParticle;
+    const double       horizon = 3e-3;
     CrackInitiation<2> initiation(Point<2>(), 0., horizon, {{horizon, 5. * horizon}});
 
     std::vector<Particle> cracked;
@@ -38,12 +38,14 @@ main(int argc, char **argv)
       cracked.push_back({id++, Point<2>(-0.5e-3 - k * 1e-3, 0.5e-3)});
     initiation.update(0., cracked, 10);
 
-    const double kink = -40. * numbers::PI / 180.;
+    const double       kink = -40. * numbers::PI / 180.;
     const Tensor<1, 2> along({std::cos(kink), std::sin(kink)});
     const Tensor<1, 2> across({-std::sin(kink), std::cos(kink)});
     cracked.push_back({id++, Point<2>(2e-3 * along)});
     initiation.update(1., cracked, 10);
-    check_above("record 1: initiation not yet (NaN)", std::isnan(initiation.initiation_time()), 0.5);
+    check_above("record 1: initiation not yet (NaN)",
+                std::isnan(initiation.initiation_time()),
+                0.5);
     check_above("record 1: growth not yet (NaN)", std::isnan(initiation.growth_time()), 0.5);
     check_above("record 1: no kink angle (NaN)", std::isnan(initiation.kink_angle()), 0.5);
 

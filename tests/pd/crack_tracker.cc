@@ -16,11 +16,11 @@
 //    within one horizon, and its speed is 10 mm over the 1e-5 s between the records within
 //    5 % (the tip positions are uncertain by about 0.2 horizon = 0.3 mm, 3 % of 10 mm).
 
-#include "../tests.h"
-
 #include <periarlequin/postprocess/crack_diagnostics.h>
 
 #include <cmath>
+
+#include "../tests.h"
 
 using namespace PeriArlequinTests;
 using namespace PeriArlequin;
@@ -67,7 +67,7 @@ namespace
   {
     auto simulator = make_simulator<2>(plate(cracks));
     simulator->setup();
-    const PDZone<2>           &pd     = *simulator->get_pd_zone();
+    const PDZone<2>          &pd     = *simulator->get_pd_zone();
     const std::vector<double> damage = pd.get_bonds().damage();
     std::vector<double>       local;
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
@@ -79,8 +79,8 @@ namespace
     Record result;
     for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
       for (std::size_t k = 0; k < part.size(); k += 3)
-        result.cracked.push_back({static_cast<types::particle_index>(part[k]),
-                                  Point<2>(part[k + 1], part[k + 2])});
+        result.cracked.push_back(
+          {static_cast<types::particle_index>(part[k]), Point<2>(part[k + 1], part[k + 2])});
     std::sort(result.cracked.begin(), result.cracked.end(), [](const auto &a, const auto &b) {
       return a.id < b.id;
     });
@@ -93,8 +93,8 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double   L = 0.02, angle = M_PI / 6;
-    const Point<2> junction(0.05, 0.03);
+    const double      L = 0.02, angle = M_PI / 6;
+    const Point<2>    junction(0.05, 0.03);
     const std::string stem  = segment(Point<2>(0, 0.03), junction);
     const std::string lower = segment(junction, end_of_branch(L, -angle));
 

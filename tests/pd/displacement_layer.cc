@@ -34,8 +34,8 @@ namespace
     std::string text =
       "set Dimension = 2\n"
       "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " +
-      std::string(coupled ? "0.06" : "0.04") + ", 0.04\n  set Subdivisions = " +
-      std::string(coupled ? "12" : "8") +
+      std::string(coupled ? "0.06" : "0.04") +
+      ", 0.04\n  set Subdivisions = " + std::string(coupled ? "12" : "8") +
       ", 8\nend\n"
       "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
       "  set Density = 2700\nend\n"
@@ -56,8 +56,8 @@ namespace
                   affine_field + "\n    end\n  end\n";
         text += "end\n";
       }
-    text += "subsection Time\n  set Time step = 5e-8\n  set End time = 2.5e-6\nend\n" +
-            quiet_output();
+    text +=
+      "subsection Time\n  set Time step = 5e-8\n  set End time = 2.5e-6\nend\n" + quiet_output();
     if (coupled)
       text += "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
               "  set Overlap region = 0.01, 0 : 0.02, 0.04 ; 0.04, 0 : 0.05, 0.04\n"
@@ -89,8 +89,7 @@ namespace
                                        std::abs(simulator.get_displacement().local_element(dof) -
                                                 affine(x)[component]));
                     });
-    return Utilities::MPI::max(worst, MPI_COMM_WORLD) /
-           Utilities::MPI::max(scale, MPI_COMM_WORLD);
+    return Utilities::MPI::max(worst, MPI_COMM_WORLD) / Utilities::MPI::max(scale, MPI_COMM_WORLD);
   }
 } // namespace
 
@@ -101,8 +100,8 @@ main(int argc, char **argv)
     {
       auto simulator = make_simulator<2>(plate(false, true));
       simulator->setup();
-      unsigned int n_prescribed = 0;
-      const PDZone<2> &pd = *simulator->get_pd_zone();
+      unsigned int     n_prescribed = 0;
+      const PDZone<2> &pd           = *simulator->get_pd_zone();
       for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
         n_prescribed += pd.is_prescribed(i);
       check("pure PD: particles in the displacement layers",

@@ -21,7 +21,8 @@ check_energy(const std::string &name, const std::string &extra)
       << "\n  set Subdivisions = " << (dim == 2 ? "8, 4" : "2, 2, 2") << "\nend\n"
       << "subsection Peridynamics\n  set Region = "
       << (dim == 2 ? "0, 0 : 0.04, 0.02" : "0, 0, 0 : 0.01, 0.01, 0.01")
-      << "\n  set Lattice spacing = 1e-3\n" << extra << "end\n"
+      << "\n  set Lattice spacing = 1e-3\n"
+      << extra << "end\n"
       << "subsection Time\n  set Time step = " << (dim == 2 ? 5e-8 : 2.5e-8)
       << "\n  set End time = " << (dim == 2 ? 5e-8 : 2.5e-8) * 2000 << "\nend\n"
       << "subsection Initial conditions\nsubsection function\n  subsection Velocity\n"

@@ -107,12 +107,12 @@ template <int dim>
 void
 extend_zone()
 {
-  const std::string title = std::to_string(dim) + "D ";
-  auto extended = make_simulator<dim>(parameters<dim>(box<dim>(0, 0.01)));
+  const std::string title    = std::to_string(dim) + "D ";
+  auto              extended = make_simulator<dim>(parameters<dim>(box<dim>(0, 0.01)));
   extended->setup();
   auto &pd = *extended->get_pd_zone();
   pd.compute_accelerations(0.);
-  const auto n_a = pd.n_global_particles();
+  const auto n_a         = pd.n_global_particles();
   const auto broken_in_a = pd.n_global_broken_bonds();
   AssertThrow(broken_in_a > 0, ExcMessage("the displacement jump broke no bond"));
 
@@ -134,7 +134,10 @@ extend_zone()
   check(title + "particles added", n_added, reference.n_global_particles() - n_a, 0);
   check(title + "particles", pd.n_global_particles(), reference.n_global_particles(), 0);
   check(title + "bond ends", pd.n_global_bonds(), reference.n_global_bonds(), 0);
-  check(title + "broken bond ends", pd.n_global_broken_bonds(), reference.n_global_broken_bonds(), 0);
+  check(title + "broken bond ends",
+        pd.n_global_broken_bonds(),
+        reference.n_global_broken_bonds(),
+        0);
 
   const auto forces = forces_by_id(pd), reference_forces = forces_by_id(reference);
   AssertThrow(forces.size() == reference_forces.size(), ExcMessage("different particle sets"));

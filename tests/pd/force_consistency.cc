@@ -15,8 +15,8 @@ template <int dim>
 void
 check_consistency()
 {
-  const double dx = 1e-3;
-  auto simulator = make_simulator<dim>(cracked_random_block<dim>());
+  const double dx        = 1e-3;
+  auto         simulator = make_simulator<dim>(cracked_random_block<dim>());
   simulator->setup();
   auto        &pd     = *simulator->get_pd_zone();
   const double volume = pd.particle_volume();
@@ -26,7 +26,7 @@ check_consistency()
   pd.compute_internal_forces();
   const auto                        densities = pd.force_densities();
   const std::vector<Tensor<1, dim>> force(densities.begin(), densities.end());
-  const double                      h     = 1e-6 * dx;
+  const double                      h       = 1e-6 * dx;
   double                            largest = 0, worst = 0;
   // Bulk, corner, surface, beside the crack faces and at the crack tip (in units of the
   // block size L: 0.02 m in 2D, 0.01 m in 3D; the crack runs on y = L/2 + 0.1 dx, x < L/2).
@@ -53,17 +53,17 @@ check_consistency()
           k = i;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double saved = pd.get_state().displacements()[k][d];
+          const double saved                   = pd.get_state().displacements()[k][d];
           pd.get_state().displacements()[k][d] = saved + h;
           pd.compute_internal_forces();
-          const double plus = pd.strain_energy();
+          const double plus                    = pd.strain_energy();
           pd.get_state().displacements()[k][d] = saved - h;
           pd.compute_internal_forces();
-          const double minus = pd.strain_energy();
+          const double minus                   = pd.strain_energy();
           pd.get_state().displacements()[k][d] = saved;
-          const double derivative = (plus - minus) / (2 * h);
-          largest = std::max(largest, std::abs(force[k][d] * volume));
-          worst   = std::max(worst, std::abs(force[k][d] * volume + derivative));
+          const double derivative              = (plus - minus) / (2 * h);
+          largest                              = std::max(largest, std::abs(force[k][d] * volume));
+          worst = std::max(worst, std::abs(force[k][d] * volume + derivative));
         }
     }
   check_below(std::to_string(dim) + "D max |f V + dE/du| / max |f V| over sampled particles",

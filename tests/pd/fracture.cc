@@ -14,9 +14,8 @@
 //    breaking leaves q unchanged, so a given crack and a grown one act alike (exact to
 //    round-off, 1e-12).
 
-#include "single_bond.h"
-
 #include "plate.h"
+#include "single_bond.h"
 
 using namespace PeriArlequinTests;
 
@@ -25,20 +24,23 @@ void
 single_bond(const std::string &model = "plane stress")
 {
   const double dx = 1e-3, G0 = 100., E = 69e9, nu = 0.3, delta = 3.015 * dx;
-  const double s_c =
-    dim == 3                ? std::sqrt(5 * G0 / (9 * (E / (3 * (1 - 2 * nu))) * delta)) :
-    model == "plane stress" ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
-                              std::sqrt(5 * numbers::PI * G0 / (12 * E * delta));
+  const double s_c = dim == 3 ? std::sqrt(5 * G0 / (9 * (E / (3 * (1 - 2 * nu))) * delta)) :
+                     model == "plane stress" ? std::sqrt(4 * numbers::PI * G0 / (9 * E * delta)) :
+                                               std::sqrt(5 * numbers::PI * G0 / (12 * E * delta));
   const double U = 2 * s_c * dx, T = 1e-4;
-  auto simulator = make_simulator<dim>(single_bond_case<dim>(model, "", G0, U, T));
+  auto         simulator = make_simulator<dim>(single_bond_case<dim>(model, "", G0, U, T));
   simulator->setup();
-  auto &pd = *simulator->get_pd_zone();
-  const std::string title = std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") + "single bond";
+  auto             &pd = *simulator->get_pd_zone();
+  const std::string title =
+    std::to_string(dim) + "D " + (dim == 2 ? model + " " : "") + "single bond";
   check(title + ": critical stretch / formula", pd.get_critical_stretch() / s_c, 1., 1e-12);
   const auto run = run_single_bond(*simulator, U, T, [&](const double e) { return e / dx > s_c; });
   report(title + ": expected breaking step", run.expected_step);
   report(title + ": breaking step", run.breaking_step);
-  check(title + ": breaking step - first step with stretch > s_c", run.breaking_step - run.expected_step, 0, 0);
+  check(title + ": breaking step - first step with stretch > s_c",
+        run.breaking_step - run.expected_step,
+        0,
+        0);
   check(title + ": bond stays broken after the stretch falls (1 = yes)", run.stays_broken, 1, 0);
 }
 
@@ -65,8 +67,8 @@ precracked_plate()
 {
   auto cracked = make_simulator<2>(plate_parameters(4e-4, true, 500));
   cracked->run();
-  auto       &pd         = *cracked->get_pd_zone();
-  const auto  broken     = cracked->get_energy_history().column("broken_bonds");
+  auto        &pd     = *cracked->get_pd_zone();
+  const auto   broken = cracked->get_energy_history().column("broken_bonds");
   const double dx = 4e-4, delta = 3.015 * dx;
   report("pre-cracked plate: bonds cut by the pre-crack", broken.front());
   report("pre-cracked plate: broken bonds at the end", broken.back());
@@ -74,7 +76,7 @@ precracked_plate()
   // Every bond broken after the start lies ahead of the tip (x > 0.02 - delta), within a few
   // horizons of the crack line y = 0.02.
   double                    farthest_from_line = 0, tip = 0;
-  const std::vector<double> damage             = pd.get_bonds().damage();
+  const std::vector<double> damage = pd.get_bonds().damage();
   for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
     if (damage[i] > 0 && pd.reference_positions()[i][0] > 0.02 - delta)
       {

@@ -11,9 +11,9 @@
 inline std::string
 plate_parameters(const double dx, const bool pre_crack, const unsigned int n_steps)
 {
-  const double E = 69e9, G0 = 1e3, delta = 3.015 * dx;
-  const double s_c = std::sqrt(4 * dealii::numbers::PI * G0 / (9 * E * delta));
-  const double H = 0.04, U = 0.5 * s_c * H / 2, dt = 0.25 * dx / 5300, T = n_steps * dt;
+  const double       E = 69e9, G0 = 1e3, delta = 3.015 * dx;
+  const double       s_c = std::sqrt(4 * dealii::numbers::PI * G0 / (9 * E * delta));
+  const double       H = 0.04, U = 0.5 * s_c * H / 2, dt = 0.25 * dx / 5300, T = n_steps * dt;
   std::ostringstream prm;
   prm << std::setprecision(17) << "set Dimension = 2\n"
       << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.04, 0.04\n"

@@ -49,7 +49,7 @@ namespace PeriArlequinTests
   struct SingleBondRun
   {
     /** The first step at which @p breaks held, and at which the bond was broken (-1: none). */
-    int  expected_step = -1, breaking_step = -1;
+    int expected_step = -1, breaking_step = -1;
     /** Did the bond stay broken once broken? */
     bool stays_broken = true;
   };
@@ -60,10 +60,10 @@ namespace PeriArlequinTests
    */
   template <int dim>
   SingleBondRun
-  run_single_bond(PeriArlequin::Simulator<dim>        &simulator,
-                  const double                         U,
-                  const double                         T,
-                  const std::function<bool(double)>   &breaks)
+  run_single_bond(PeriArlequin::Simulator<dim>      &simulator,
+                  const double                       U,
+                  const double                       T,
+                  const std::function<bool(double)> &breaks)
   {
     auto &pd = *simulator.get_pd_zone();
     AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,

@@ -22,12 +22,11 @@
 //    every static case: tolerance 0.
 // On 2 ranks the same numbers come out (the test's .mpirun=2 output is the 1-rank one).
 
-#include "../tests.h"
+#include <tbb/task_arena.h>
 
 #include "../coupling/coupled_cases.h"
+#include "../tests.h"
 #include "plate.h"
-
-#include <tbb/task_arena.h>
 
 using namespace PeriArlequinTests;
 
@@ -76,9 +75,9 @@ namespace
     // Under the stencil a stored bond finds its neighbour from the slot and the offset; the
     // bond lists store it: every stored bond must reach the same particle (ids: exact).
     {
-      const auto   &bonds_a = a.get_bonds(), &bonds_b = b.get_bonds();
-      const auto    ids_a = a.particle_ids(), ids_b = b.particle_ids();
-      unsigned int  differing = bonds_a.n_bonds() == bonds_b.n_bonds() ? 0 : 1;
+      const auto  &bonds_a = a.get_bonds(), &bonds_b = b.get_bonds();
+      const auto   ids_a = a.particle_ids(), ids_b = b.particle_ids();
+      unsigned int differing = bonds_a.n_bonds() == bonds_b.n_bonds() ? 0 : 1;
       for (unsigned int i = 0; i < bonds_a.n_owned && differing == 0; ++i)
         for (unsigned int n = bonds_a.family_begin[i]; n < bonds_a.family_begin[i + 1]; ++n)
           differing += ids_a[bonds_a.neighbor(i, n)] != ids_b[bonds_b.neighbor(i, n)] ||
@@ -141,45 +140,45 @@ main(int argc, char **argv)
     [] {
       AssertThrow(MultithreadInfo::n_threads() == 2,
                   ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
-    compare_densities<2>("2D plane stress, notched block with a hole", notched_block(""));
-    compare_densities<2>("2D plane strain, notched block with a hole",
-                         notched_block("plane strain"));
-    compare_densities<3>("3D cracked block with a hole",
-                         cracked_random_block<3>() +
-                           "subsection Peridynamics\n  set Region = 0, 0, 0 : 0.01, 0.01, "
-                           "0.004 ; 0, 0, 0.004 : 0.01, 0.004, 0.007 ; 0, 0.007, 0.004 : "
-                           "0.01, 0.01, 0.007 ; 0, 0.004, 0.004 : 0.004, 0.007, 0.007 ; 0, 0, "
-                           "0.007 : 0.01, 0.01, 0.01\nend\n");
-    // Other horizons: the blocks of the kernel change with the stencil's reach (offsets
-    // fewer than 8 slots apart are summed in chunks, the others directly).
-    for (const double m : {1.5, 4.5})
-      compare_densities<2>("2D plane stress, notched block with a hole, m = " +
-                             Utilities::to_string(m),
-                           notched_block("") + horizon(m, "4, 4"));
-    for (const double m : {2., 4.})
-      compare_densities<3>("3D cracked block, m = " + Utilities::to_string(m),
-                           cracked_random_block<3>() + horizon(m, "2, 2, 2"));
-    for (const std::string blending : {"energy", "force"})
-      compare_densities<2>("coupled ring, " + blending + " blending",
-                           ring_case(0.04,
-                                     "weak",
-                                     blending,
-                                     "1e-4*sin(30*x*y+7*y+1); 1e-4*cos(20*x+400*x*y)",
-                                     "0; 0",
-                                     false,
-                                     2e-7));
+      compare_densities<2>("2D plane stress, notched block with a hole", notched_block(""));
+      compare_densities<2>("2D plane strain, notched block with a hole",
+                           notched_block("plane strain"));
+      compare_densities<3>("3D cracked block with a hole",
+                           cracked_random_block<3>() +
+                             "subsection Peridynamics\n  set Region = 0, 0, 0 : 0.01, 0.01, "
+                             "0.004 ; 0, 0, 0.004 : 0.01, 0.004, 0.007 ; 0, 0.007, 0.004 : "
+                             "0.01, 0.01, 0.007 ; 0, 0.004, 0.004 : 0.004, 0.007, 0.007 ; 0, 0, "
+                             "0.007 : 0.01, 0.01, 0.01\nend\n");
+      // Other horizons: the blocks of the kernel change with the stencil's reach (offsets
+      // fewer than 8 slots apart are summed in chunks, the others directly).
+      for (const double m : {1.5, 4.5})
+        compare_densities<2>("2D plane stress, notched block with a hole, m = " +
+                               Utilities::to_string(m),
+                             notched_block("") + horizon(m, "4, 4"));
+      for (const double m : {2., 4.})
+        compare_densities<3>("3D cracked block, m = " + Utilities::to_string(m),
+                             cracked_random_block<3>() + horizon(m, "2, 2, 2"));
+      for (const std::string blending : {"energy", "force"})
+        compare_densities<2>("coupled ring, " + blending + " blending",
+                             ring_case(0.04,
+                                       "weak",
+                                       blending,
+                                       "1e-4*sin(30*x*y+7*y+1); 1e-4*cos(20*x+400*x*y)",
+                                       "0; 0",
+                                       false,
+                                       2e-7));
 
-    const std::string plate = plate_parameters(8e-4, true, 300);
-    auto              stencil = make_simulator<2>(plate + kernel("stencil"));
-    auto              list    = make_simulator<2>(plate + kernel("bond list"));
-    stencil->run();
-    list->run();
-    require_active_column(*stencil, "pre-cracked plate, stencil", "broken_bonds");
-    check_below("pre-cracked plate, 300 steps, stencil vs bond list histories, relative",
-                history_difference(stencil->get_energy_history(),
-                                   list->get_energy_history(),
-                                   "pre-cracked plate"),
-                1e-10);
+      const std::string plate   = plate_parameters(8e-4, true, 300);
+      auto              stencil = make_simulator<2>(plate + kernel("stencil"));
+      auto              list    = make_simulator<2>(plate + kernel("bond list"));
+      stencil->run();
+      list->run();
+      require_active_column(*stencil, "pre-cracked plate, stencil", "broken_bonds");
+      check_below("pre-cracked plate, 300 steps, stencil vs bond list histories, relative",
+                  history_difference(stencil->get_energy_history(),
+                                     list->get_energy_history(),
+                                     "pre-cracked plate"),
+                  1e-10);
     },
     2);
 }

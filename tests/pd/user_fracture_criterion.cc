@@ -6,9 +6,9 @@
 // bond must break at the first step whose extension u exceeds e_c (computed here), exactly,
 // and stay broken when u falls back (the default e_c, 1 m, would never break it).
 
-#include "../tests.h"
-
 #include <periarlequin/pd/fracture_criterion.h>
+
+#include "../tests.h"
 
 namespace UserCriteria
 {
@@ -35,8 +35,8 @@ namespace UserCriteria
                const BondFamilies<dim> &) override
     {}
     bool
-    break_bonds(BondFamilies<dim>               &bonds,
-                ArrayView<const Tensor<1, dim>>  u,
+    break_bonds(BondFamilies<dim>              &bonds,
+                ArrayView<const Tensor<1, dim>> u,
                 ArrayView<const double>) const override
     {
       bool broke = false;
@@ -73,7 +73,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double dx = 1e-3, e_c = 1e-6, U = 2 * e_c, T = 1e-4;
+    const double       dx = 1e-3, e_c = 1e-6, U = 2 * e_c, T = 1e-4;
     std::ostringstream prm;
     prm << std::setprecision(17) << "set Dimension = 2\n"
         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.01, 0.01\n"
@@ -94,7 +94,7 @@ main(int argc, char **argv)
     AssertThrow(pd.n_global_particles() == 2 && pd.n_global_bonds() == 2,
                 ExcMessage("expected two particles and one bond (stored at both ends)"));
     int  first_broken_step = -1, expected_step = -1;
-    bool stays_broken      = true;
+    bool stays_broken = true;
     for (int step = 1; simulator->get_time() < T * (1 - 1e-12); ++step)
       {
         simulator->advance();

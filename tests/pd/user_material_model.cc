@@ -2,21 +2,20 @@
 // bond-based prototype micro-elastic brittle (PMB) model with a parameter of its own
 // ("Peridynamics/calibrated PMB/Stiffness factor", scaling the micromodulus), registers it
 // under the name "calibrated PMB" with PERIARLEQUIN_REGISTER_PD_MATERIAL, and runs it by
-// naming it in the parameter file. Its micromodulus is calibrated on the lattice so that the dilatation
-// energy is exactly classical: W = (c / 4) sum s^2 x V v with c = 18 K / sum x V v (3D) or
-// 4 E / ((1 - nu) sum x V v) (plane stress). Checked: under a pure dilatation the interior
-// force vanishes (1e-10 of the surface force: round-off) and W equals the classical
-// 9 K eps^2 / 2 (3D) or E eps^2 / (1 - nu) (plane stress) to 1e-10 (exact by construction);
-// with the stiffness factor set to 2.5 in the parameter file, W is 2.5 times that (the
-// parameter reached the model).
-// The strain is 1e-4 because this simple model computes the stretch as a difference of
-// lengths, whose round-off is 1e-16 / strain relative.
-// The model has no stencil kernel: the automatic force kernel gives it the bond lists, and
-// asking for the stencil (Peridynamics/Force kernel = stencil) is refused by name.
-
-#include "../tests.h"
+// naming it in the parameter file. Its micromodulus is calibrated on the lattice so that the
+// dilatation energy is exactly classical: W = (c / 4) sum s^2 x V v with c = 18 K / sum x V v (3D)
+// or 4 E / ((1 - nu) sum x V v) (plane stress). Checked: under a pure dilatation the interior force
+// vanishes (1e-10 of the surface force: round-off) and W equals the classical 9 K eps^2 / 2 (3D) or
+// E eps^2 / (1 - nu) (plane stress) to 1e-10 (exact by construction); with the stiffness factor set
+// to 2.5 in the parameter file, W is 2.5 times that (the parameter reached the model). The strain
+// is 1e-4 because this simple model computes the stretch as a difference of lengths, whose
+// round-off is 1e-16 / strain relative. The model has no stencil kernel: the automatic force kernel
+// gives it the bond lists, and asking for the stencil (Peridynamics/Force kernel = stencil) is
+// refused by name.
 
 #include <periarlequin/pd/material_model.h>
+
+#include "../tests.h"
 
 namespace UserModels
 {
@@ -47,10 +46,9 @@ namespace UserModels
       double moment = 0; // sum x V v over a full family
       for (const auto &bond : bonds.stencil)
         moment += bond.length * bond.volume;
-      micromodulus = stiffness_factor *
-                     (dim == 3 ? 18 * material.bulk_modulus() / moment :
-                                 4 * material.youngs_modulus /
-                                   ((1 - material.poissons_ratio) * moment));
+      micromodulus   = stiffness_factor * (dim == 3 ? 18 * material.bulk_modulus() / moment :
+                                                      4 * material.youngs_modulus /
+                                                      ((1 - material.poissons_ratio) * moment));
       youngs_modulus = material.youngs_modulus;
     }
     unsigned int
@@ -69,10 +67,10 @@ namespace UserModels
                              std::vector<double> &) const override
     {}
     void
-    compute_forces(const BondFamilies<dim>          &bonds,
-                   ArrayView<const Tensor<1, dim>>  u,
+    compute_forces(const BondFamilies<dim>        &bonds,
+                   ArrayView<const Tensor<1, dim>> u,
                    const std::vector<double> &,
-                   const std::vector<double>         &state_weight,
+                   const std::vector<double>   &state_weight,
                    std::vector<Tensor<1, dim>> &force_density,
                    std::vector<double>         &energy_density) const override
     {
@@ -89,9 +87,9 @@ namespace UserModels
             const Tensor<1, dim> y    = bond.xi + u[j] - u[i];
             const double         s    = (y.norm() - bond.length) / bond.length;
             // Half the bond energy belongs to each end, weighted by that end's state weight.
-            const double         w    = 0.5 * (state_weight[i] + state_weight[j]);
-            const Tensor<1, dim> pair = (w * micromodulus * s * bond.volume / y.norm()) * y;
-            const double energy = 0.25 * micromodulus * s * s * bond.length * bond.volume;
+            const double         w      = 0.5 * (state_weight[i] + state_weight[j]);
+            const Tensor<1, dim> pair   = (w * micromodulus * s * bond.volume / y.norm()) * y;
+            const double         energy = 0.25 * micromodulus * s * s * bond.length * bond.volume;
             force_density[i] += pair;
             energy_density[i] += state_weight[i] * energy;
             if (bonds.neighbor_is_owned(i, n))
@@ -156,7 +154,8 @@ check_user_model(const double stiffness_factor)
         }
       catch (const std::exception &error)
         {
-          refused = std::string(error.what()).find("Peridynamics/Force kernel") != std::string::npos;
+          refused =
+            std::string(error.what()).find("Peridynamics/Force kernel") != std::string::npos;
         }
       AssertThrow(refused,
                   ExcMessage("Force kernel = stencil with a model without a stencil kernel was "
@@ -164,7 +163,7 @@ check_user_model(const double stiffness_factor)
       verdicts() << dim << "D calibrated PMB (user model): bond lists under the automatic "
                  << "kernel, the stencil refused by name" << std::endl;
     }
-  const double L     = dim == 2 ? 0.02 : 0.016, reach = 3.015 * dx + 0.5 * dx;
+  const double L = dim == 2 ? 0.02 : 0.016, reach = 3.015 * dx + 0.5 * dx;
   double       inner = 0, largest = 0, energy = 0;
   for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
     {
@@ -178,9 +177,7 @@ check_user_model(const double stiffness_factor)
     }
   std::ostringstream title;
   title << dim << "D calibrated PMB (user model), stiffness factor " << stiffness_factor;
-  check_below(title.str() + ": max interior |force| / max surface |force|",
-              inner / largest,
-              1e-10);
+  check_below(title.str() + ": max interior |force| / max surface |force|", inner / largest, 1e-10);
   check(title.str() + ": W / (factor x classical) under pure dilatation",
         energy / (stiffness_factor * classical),
         1.,

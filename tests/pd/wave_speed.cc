@@ -37,7 +37,7 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    const double x0 = 0.3, w = 0.15;
+    const double       x0 = 0.3, w = 0.15;
     std::ostringstream prm;
     prm << "set Dimension = 2\n"
         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.85, 0.4\n"
@@ -55,7 +55,7 @@ main(int argc, char **argv)
         << quiet_output();
     auto simulator = make_simulator<2>(prm.str());
     simulator->setup();
-    auto        &pd       = *simulator->get_pd_zone();
+    auto        &pd = *simulator->get_pd_zone();
     const double E = 69e9, nu = 0.3, rho = 2700;
     const double expected = std::sqrt(E / (rho * (1 - nu * nu)));
     const double t1 = w / expected, t2 = t1 + 0.225 / expected;
@@ -71,6 +71,9 @@ main(int argc, char **argv)
       }
     report("centroid at t1", c1);
     report("centroid at t2", c2);
-    check("PD long-wave speed / sqrt(E / (rho (1 - nu^2)))", (c2 - c1) / (s2 - s1) / expected, 1., 0.02);
+    check("PD long-wave speed / sqrt(E / (rho (1 - nu^2)))",
+          (c2 - c1) / (s2 - s1) / expected,
+          1.,
+          0.02);
   });
 }

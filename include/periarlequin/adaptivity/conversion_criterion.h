@@ -1,11 +1,11 @@
 #ifndef periarlequin_adaptivity_conversion_criterion_h
 #define periarlequin_adaptivity_conversion_criterion_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <vector>
 
@@ -120,12 +120,13 @@ namespace PeriArlequin
  * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
  * @p name.
  */
-#define PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(classname, name, description)          \
-  namespace                                                                                \
-  {                                                                                        \
-    const bool periarlequin_registered_conversion_##classname =                            \
+#define PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(classname, name, description)            \
+  namespace                                                                                 \
+  {                                                                                         \
+    const bool periarlequin_registered_conversion_##classname =                             \
       PeriArlequin::register_plugin_template<PeriArlequin::ConversionCriterion, classname>( \
-        name, description);                                                                \
+        name,                                                                               \
+        description);                                                                       \
   }
 
 #endif

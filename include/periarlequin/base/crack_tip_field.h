@@ -1,12 +1,12 @@
 #ifndef periarlequin_base_crack_tip_field_h
 #define periarlequin_base_crack_tip_field_h
 
+#include <periarlequin/base/parameters.h>
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
-#include <periarlequin/base/parameters.h>
 
 #include <array>
 #include <string>
@@ -41,15 +41,15 @@ namespace PeriArlequin
      * The field of that subsection for @p material (its elastic constants and, in 2D, its
      * plane model); fills @p boundary_ids with the ids it prescribes.
      */
-    CrackTipField(ParameterHandler                &prm,
-                  const Parameters::Material      &material,
-                  std::vector<unsigned int>       &boundary_ids);
+    CrackTipField(ParameterHandler           &prm,
+                  const Parameters::Material &material,
+                  std::vector<unsigned int>  &boundary_ids);
 
     /** The field of a tip at @p tip whose crack grows along @p direction [rad]. */
-    CrackTipField(const Point<2>            &tip,
-                  const double               direction,
-                  const std::string         &stress_intensity,
-                  const double               phase_angle,
+    CrackTipField(const Point<2>             &tip,
+                  const double                direction,
+                  const std::string          &stress_intensity,
+                  const double                phase_angle,
                   const Parameters::Material &material);
 
     void

@@ -1,12 +1,12 @@
 #ifndef periarlequin_base_initial_conditions_h
 #define periarlequin_base_initial_conditions_h
 
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/plugin_registry.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/tensor.h>
-
-#include <periarlequin/base/parameters.h>
-#include <periarlequin/base/plugin_registry.h>
 
 #include <memory>
 
@@ -101,12 +101,13 @@ namespace PeriArlequin
  * dimensions) under @p name; its static declare_parameters(), if any, declares the entries
  * of subsection "Initial conditions/<name>".
  */
-#define PERIARLEQUIN_REGISTER_INITIAL_CONDITION(classname, name, description)                \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_initial_condition_##classname =                       \
-      PeriArlequin::register_plugin_template<PeriArlequin::InitialCondition, classname>(     \
-        name, description);                                                                  \
+#define PERIARLEQUIN_REGISTER_INITIAL_CONDITION(classname, name, description)            \
+  namespace                                                                              \
+  {                                                                                      \
+    const bool periarlequin_registered_initial_condition_##classname =                   \
+      PeriArlequin::register_plugin_template<PeriArlequin::InitialCondition, classname>( \
+        name,                                                                            \
+        description);                                                                    \
   }
 
 #endif

@@ -65,10 +65,10 @@ namespace PeriArlequin
 
   /**
    * The entries of one parameter structure, written once for declaring and for parsing: a
-   * structure lists its entries in `template <typename Entries> void entries(Entries &)`,
-   * which declare() runs on a default-constructed structure (the members' initial values
-   * are the declared defaults) and parse() on the structure being filled. The path
-   * (subsection/...) names the entries in error messages.
+   * structure lists its entries in `void entries(ParameterEntries &entries)` with add() and
+   * add_parsed(), which declare() runs on a default-constructed structure (the members'
+   * initial values are the declared defaults) and parse() on the structure being filled.
+   * The path (subsection/...) names the entries in error messages.
    */
   class ParameterEntries
   {
@@ -121,10 +121,10 @@ namespace PeriArlequin
     /** An entry of a type deal.II converts (number, bool, string, vector of these). */
     template <typename T>
     void
-    add(const std::string            &name,
-        T                            &member,
-        const Patterns::PatternBase  &pattern,
-        const std::string            &documentation)
+    add(const std::string           &name,
+        T                           &member,
+        const Patterns::PatternBase &pattern,
+        const std::string           &documentation)
     {
       using Convert = Patterns::Tools::Convert<T>;
       if (parsing)
@@ -155,11 +155,11 @@ namespace PeriArlequin
      */
     template <typename Parsed>
     void
-    add_parsed(const std::string                                                    &name,
-               Parsed                                                               &member,
-               const std::string                                                    &default_text,
+    add_parsed(const std::string                                                     &name,
+               Parsed                                                                &member,
+               const std::string                                                     &default_text,
                const std::function<Parsed(const std::string &, const std::string &)> &parse,
-               const std::string                                                    &documentation)
+               const std::string                                                     &documentation)
     {
       if (parsing)
         member = parse(prm.get(name), path + name);
@@ -208,9 +208,8 @@ namespace PeriArlequin
       plane_strain
     };
 
-    inline const SelectionNames<PlanarModel> planar_model_names = {
-      {"plane stress", PlanarModel::plane_stress},
-      {"plane strain", PlanarModel::plane_strain}};
+    inline const SelectionNames<PlanarModel> planar_model_names =
+      {{"plane stress", PlanarModel::plane_stress}, {"plane strain", PlanarModel::plane_strain}};
 
     /** Isotropic linear elastic material shared by the FE and PD zones. */
     struct Material
@@ -273,7 +272,6 @@ namespace PeriArlequin
       parse_parameters(ParameterHandler &prm);
     };
 
-    /** What is written, where, and how often. */
     /** The zlib level of the field files' data. */
     enum class OutputCompression
     {
@@ -290,22 +288,23 @@ namespace PeriArlequin
       {"small", OutputCompression::small},
       {"none", OutputCompression::none}};
 
+    /** What is written, where, and how often. */
     struct Output
     {
-      std::string  directory         = "output";
-      std::string  base_name         = "solution";
-      unsigned int output_interval   = 100;
-      unsigned int energy_interval   = 1;
-      double       progress_interval = 5;
-      bool         print_timing      = true;
-      OutputCompression compression  = OutputCompression::fast;
+      std::string       directory         = "output";
+      std::string       base_name         = "solution";
+      unsigned int      output_interval   = 100;
+      unsigned int      energy_interval   = 1;
+      double            progress_interval = 5;
+      bool              print_timing      = true;
+      OutputCompression compression       = OutputCompression::fast;
       /**
        * Segment "x0, y0 : x1, y1" along which displacements are sampled ("" for none), and
        * boxes whose PD energies are recorded as the pure PD zone's ("": the PD region). Kept
        * as text because this structure does not know the dimension: the Simulator parses
        * them at construction, so --check validates them.
        */
-      std::string  sample_line, monitor_region;
+      std::string sample_line, monitor_region;
 
       void
       entries(ParameterEntries &entries);

@@ -84,8 +84,8 @@ namespace PeriArlequin
     {
       const auto found = plugins().find(name);
       AssertThrow(found != plugins().end(),
-                  ExcMessage("No plugin named '" + name + "' is registered; registered: " +
-                             names() + "."));
+                  ExcMessage("No plugin named '" + name +
+                             "' is registered; registered: " + names() + "."));
       return found->second.creator(arguments...);
     }
 

@@ -1,12 +1,12 @@
 #ifndef periarlequin_base_problem_data_h
 #define periarlequin_base_problem_data_h
 
+#include <periarlequin/base/initial_conditions.h>
+#include <periarlequin/base/parameters.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/fe/component_mask.h>
-
-#include <periarlequin/base/parameters.h>
-#include <periarlequin/base/initial_conditions.h>
 
 #include <array>
 #include <memory>

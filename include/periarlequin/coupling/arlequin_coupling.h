@@ -18,10 +18,10 @@ namespace PeriArlequin
   /**
    * The Arlequin coupling with Lagrange multipliers (doc/method.md, section 4), registered as
    * "strict" (a multiplier per PD node of the overlap, H = I) and "weak" (a multiplier per FE
-   * node of the overlap, H = N, or per node of a coarser Cartesian grid). Made of named operators: N at the overlap's PD nodes
-   * (InterpolationOperator), the lambda-mesh H (MultiplierSpace), the multiplier system
-   * (MultiplierSolver), the fine-scale damping (FineScaleDamping) and the slaves that complete
-   * the families past the overlap (SlaveLayer).
+   * node of the overlap, H = N, or per node of a coarser Cartesian grid). Made of named operators:
+   * N at the overlap's PD nodes (InterpolationOperator), the lambda-mesh H (MultiplierSpace), the
+   * multiplier system (MultiplierSolver), the fine-scale damping (FineScaleDamping) and the slaves
+   * that complete the families past the overlap (SlaveLayer).
    *
    * The constraint is g = H^T (N u - d) (eq. 38, 40). Each step the multipliers solve
    * A lambda = H^T (N v* - w*), and correct v -= dt M_c^-1 G lambda (G = N^T H, eq. 46) and
@@ -91,24 +91,24 @@ namespace PeriArlequin
     const Parameters::Coupling parameters;
     const MultiplierMesh       mesh;
     /** Spacing of the weak coupling's lambda-mesh in FE cells; 1: the FE nodes [-]. */
-    double                     multiplier_spacing = 2;
+    double multiplier_spacing = 2;
     /** Where that grid starts, a fraction of its spacing before the overlap's corner [-]. */
-    double                     multiplier_grid_offset = 0;
-    FEZone<dim>               *fe_zone = nullptr;
-    PDZone<dim>               *pd_zone = nullptr;
-    double                     time_step = 0;
+    double       multiplier_grid_offset = 0;
+    FEZone<dim> *fe_zone                = nullptr;
+    PDZone<dim> *pd_zone                = nullptr;
+    double       time_step              = 0;
 
     /** Owned PD nodes of the overlap (0 < alpha < 1), the rows of N. */
-    std::vector<unsigned int>                  overlap_particles;
-    InterpolationOperator<dim>                 overlap;
-    SlaveLayer<dim>                            slaves;
-    std::unique_ptr<MultiplierSpace<dim>>      space;
-    std::unique_ptr<MultiplierSolver<dim>>     solver;
-    std::unique_ptr<FineScaleDamping<dim>>     damping;
-    VectorType                                 fe_inverse_mass;
-    std::vector<double>                        pd_inverse_mass;
+    std::vector<unsigned int>              overlap_particles;
+    InterpolationOperator<dim>             overlap;
+    SlaveLayer<dim>                        slaves;
+    std::unique_ptr<MultiplierSpace<dim>>  space;
+    std::unique_ptr<MultiplierSolver<dim>> solver;
+    std::unique_ptr<FineScaleDamping<dim>> damping;
+    VectorType                             fe_inverse_mass;
+    std::vector<double>                    pd_inverse_mass;
 
-    VectorType                                 lambda, rhs, fe_scratch;
+    VectorType lambda, rhs, fe_scratch;
     /** Scratch values at the overlap's PD nodes. */
     mutable typename InterpolationOperator<dim>::Values overlap_values;
   };

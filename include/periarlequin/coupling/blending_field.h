@@ -1,11 +1,11 @@
 #ifndef periarlequin_coupling_blending_field_h
 #define periarlequin_coupling_blending_field_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/regions.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <string>
 
@@ -47,20 +47,19 @@ namespace PeriArlequin
       cg
     };
 
-    inline const SelectionNames<MultiplierSolver> multiplier_solver_names = {
-      {"diagonal", MultiplierSolver::diagonal},
-      {"cg", MultiplierSolver::cg}};
+    inline const SelectionNames<MultiplierSolver> multiplier_solver_names =
+      {{"diagonal", MultiplierSolver::diagonal}, {"cg", MultiplierSolver::cg}};
 
     /** The Arlequin coupling: zones, blending, multipliers, fine-scale damping. */
     struct Coupling
     {
       /** "none" (uncoupled: pure FE, pure PD or independent bodies) or a registered name. */
-      std::string      method = "none";
+      std::string method = "none";
       /** Overlap (0 < alpha < 1) and pure FE (alpha = 1) regions; pure PD is the PD region. */
-      std::string      overlap_text, fe_region_text;
+      std::string overlap_text, fe_region_text;
       /** Width of the band around the PD region that is the overlap (0: the regions) [m]. */
       double           overlap_width         = 0.;
-      Blending         blending = Blending::energy;
+      Blending         blending              = Blending::energy;
       MultiplierSolver multiplier_solver     = MultiplierSolver::diagonal;
       bool             damping               = true;
       double           damping_constant      = 10.;
@@ -150,14 +149,14 @@ namespace PeriArlequin
     set_pd_region(const Region<dim> &grown);
 
   private:
-    BlendingProfile            profile;
-    Region<dim>                pure_pd, overlap_region, pure_fe;
+    BlendingProfile profile;
+    Region<dim>     pure_pd, overlap_region, pure_fe;
     /** The entries the boxes came from, for messages. */
-    std::string                overlap_text, fe_region_text;
+    std::string overlap_text, fe_region_text;
     /** Width of the band (0: the overlap and FE regions are boxes) [m]. */
-    double                     band_width;
+    double band_width;
     /** Tolerance for merging the boxes of the PD region [m] (set by check_against_mesh()). */
-    double                     length_tolerance = 0;
+    double length_tolerance = 0;
   };
 } // namespace PeriArlequin
 

@@ -1,12 +1,12 @@
 #ifndef periarlequin_coupling_coupling_h
 #define periarlequin_coupling_coupling_h
 
-#include <deal.II/base/types.h>
-
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/coupling/blending_field.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/types.h>
 
 #include <memory>
 #include <utility>
@@ -117,14 +117,15 @@ namespace PeriArlequin
  * under @p name,
  * e.g. PERIARLEQUIN_REGISTER_COUPLING(MyCoupling, "mine", "what it does").
  */
-#define PERIARLEQUIN_REGISTER_COUPLING(classname, name, description)                        \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_coupling_##classname =                                \
-      PeriArlequin::register_plugin_template<PeriArlequin::Coupling,                         \
-                                             classname,                                      \
-                                             const PeriArlequin::Parameters::Coupling &>(    \
-        name, description);                                                                  \
+#define PERIARLEQUIN_REGISTER_COUPLING(classname, name, description)                      \
+  namespace                                                                               \
+  {                                                                                       \
+    const bool periarlequin_registered_coupling_##classname =                             \
+      PeriArlequin::register_plugin_template<PeriArlequin::Coupling,                      \
+                                             classname,                                   \
+                                             const PeriArlequin::Parameters::Coupling &>( \
+        name,                                                                             \
+        description);                                                                     \
   }
 
 #endif

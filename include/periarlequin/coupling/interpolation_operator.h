@@ -1,14 +1,14 @@
 #ifndef periarlequin_coupling_interpolation_operator_h
 #define periarlequin_coupling_interpolation_operator_h
 
+#include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/pd/pd_zone.h>
+
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
-
-#include <periarlequin/fe/fe_zone.h>
-#include <periarlequin/pd/pd_zone.h>
 
 #include <vector>
 

@@ -68,7 +68,7 @@ namespace PeriArlequin
     SlaveLayer<dim>            slaves;
     std::vector<FESlave>       fe_slaves;
     /** PD velocities and accelerations of owned and ghost particles. */
-    std::vector<double>        pd_motion;
+    std::vector<double> pd_motion;
   };
 } // namespace PeriArlequin
 

@@ -1,11 +1,11 @@
 #ifndef periarlequin_coupling_multiplier_solver_h
 #define periarlequin_coupling_multiplier_solver_h
 
-#include <deal.II/lac/diagonal_matrix.h>
-#include <deal.II/lac/linear_operator.h>
-
 #include <periarlequin/coupling/blending_field.h>
 #include <periarlequin/coupling/multiplier_space.h>
+
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/linear_operator.h>
 
 #include <vector>
 
@@ -30,11 +30,11 @@ namespace PeriArlequin
      * @p fe_inverse_mass: 1/m_J on the FE DoFs (0 where prescribed) with ghost values;
      * @p pd_inverse_mass: 1/m_I at the overlap PD nodes (the rows of @p overlap).
      */
-    MultiplierSolver(MultiplierSpace<dim>             &space,
-                     const InterpolationOperator<dim> &overlap,
-                     const VectorType                 &fe_inverse_mass,
-                     const std::vector<double>        &pd_inverse_mass,
-                     const double                      time_step,
+    MultiplierSolver(MultiplierSpace<dim>              &space,
+                     const InterpolationOperator<dim>  &overlap,
+                     const VectorType                  &fe_inverse_mass,
+                     const std::vector<double>         &pd_inverse_mass,
+                     const double                       time_step,
                      const Parameters::MultiplierSolver method);
 
     /** Shape a multiplier vector. */
@@ -62,23 +62,23 @@ namespace PeriArlequin
     last_iterations() const;
 
   private:
-    MultiplierSpace<dim>             &space;
-    const InterpolationOperator<dim> &overlap;
-    const VectorType                 &fe_inverse_mass;
-    const std::vector<double>         pd_inverse_mass;
-    const double                      time_step;
+    MultiplierSpace<dim>              &space;
+    const InterpolationOperator<dim>  &overlap;
+    const VectorType                  &fe_inverse_mass;
+    const std::vector<double>          pd_inverse_mass;
+    const double                       time_step;
     const Parameters::MultiplierSolver method;
 
     /** Row sums (diagonal solver) or the inverse diagonal of A (CG preconditioner). */
-    VectorType                        diagonal;
+    VectorType diagonal;
     /** 1 for the multipliers with an equation, 0 where A has a zero row (all prescribed). */
-    VectorType                        free_rows;
-    VectorType                        free_rhs;
-    DiagonalMatrix<VectorType>        preconditioner;
-    LinearOperator<VectorType>        a_operator;
-    VectorType                        fe_scratch;
+    VectorType                            free_rows;
+    VectorType                            free_rhs;
+    DiagonalMatrix<VectorType>            preconditioner;
+    LinearOperator<VectorType>            a_operator;
+    VectorType                            fe_scratch;
     typename MultiplierSpace<dim>::Values overlap_values, overlap_values_2;
-    unsigned int                      iterations = 0;
+    unsigned int                          iterations = 0;
   };
 } // namespace PeriArlequin
 

@@ -109,17 +109,18 @@ namespace PeriArlequin
     const InterpolationOperator<dim> &overlap;
     const FEZone<dim>                &fe_zone;
     /** Owned FE DoFs (local index) carrying a multiplier, in multiplier order. */
-    std::vector<unsigned int>         multiplier_dofs;
-    VectorType                        fe_scratch;
+    std::vector<unsigned int> multiplier_dofs;
+    VectorType                fe_scratch;
   };
 
   /**
    * Weak coupling on a lambda-mesh of its own: the Q1 hat functions of a Cartesian grid of
    * spacing H = k h_FE (k >= 1, h_FE the largest FE cell extent around the overlap) laid from
-   * the lower corner of the overlap's PD nodes (or a fraction of H before it), a multiplier per grid node whose hat reaches one of them. With H = 2 h_FE the
-   * constraint is blind to the waves of 2 to 4 FE cells that the FE mesh carries but cannot
-   * propagate: in the overlap they are fine scale, left to the damping, instead of being
-   * tied to an FE field that sends them back (doc/wave_study.md).
+   * the lower corner of the overlap's PD nodes (or a fraction of H before it), a multiplier per
+   * grid node whose hat reaches one of them. With H = 2 h_FE the constraint is blind to the waves
+   * of 2 to 4 FE cells that the FE mesh carries but cannot propagate: in the overlap they are fine
+   * scale, left to the damping, instead of being tied to an FE field that sends them back
+   * (doc/wave_study.md).
    */
   template <int dim>
   class GridMultiplierSpace : public MultiplierSpace<dim>
@@ -171,10 +172,10 @@ namespace PeriArlequin
     std::vector<unsigned int>         row_begin = {0};
     std::vector<Entry>                entries;
     /** Colour of each owned grid node (0 to stride^dim - 1). */
-    std::vector<unsigned int>         colours;
-    unsigned int                      n_colours = 1;
+    std::vector<unsigned int> colours;
+    unsigned int              n_colours = 1;
     /** Multipliers with the ghost entries that the owned overlap nodes reach. */
-    mutable VectorType                ghosted;
+    mutable VectorType ghosted;
   };
 } // namespace PeriArlequin
 

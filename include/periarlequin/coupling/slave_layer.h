@@ -49,11 +49,11 @@ namespace PeriArlequin
     n_global_slaves() const;
 
   private:
-    FEZone<dim>               *fe_zone = nullptr;
-    PDZone<dim>               *pd_zone = nullptr;
-    std::vector<unsigned int>  particles;
-    InterpolationOperator<dim> interpolation;
-    VectorType                 scratch;
+    FEZone<dim>                *fe_zone = nullptr;
+    PDZone<dim>                *pd_zone = nullptr;
+    std::vector<unsigned int>   particles;
+    InterpolationOperator<dim>  interpolation;
+    VectorType                  scratch;
     std::vector<Tensor<1, dim>> forces;
   };
 } // namespace PeriArlequin

@@ -1,12 +1,12 @@
 #ifndef periarlequin_fe_contact_h
 #define periarlequin_fe_contact_h
 
+#include <periarlequin/base/plugin_registry.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/la_parallel_vector.h>
-
-#include <periarlequin/base/plugin_registry.h>
 
 #include <array>
 #include <map>
@@ -78,7 +78,7 @@ namespace PeriArlequin
 
   protected:
     /** The FE zone's communicator, set by initialize(). */
-    MPI_Comm       communicator = MPI_COMM_SELF;
+    MPI_Comm communicator = MPI_COMM_SELF;
     /** This rank's share of the contact force and of the touching nodes at the last enforce(). */
     Tensor<1, dim> local_force;
     unsigned int   local_touching = 0;
@@ -133,12 +133,13 @@ namespace PeriArlequin
     void
     initialize(const FEZone<dim> &zone) override;
     void
-    enforce(const double                         time_step,
+    enforce(const double                             time_step,
             const typename Contact<dim>::VectorType &mass,
             const typename Contact<dim>::VectorType &displacement,
             const typename Contact<dim>::VectorType &velocity,
             typename Contact<dim>::VectorType       &acceleration,
             typename Contact<dim>::VectorType       &applied_force) override;
+
   private:
     /** A boundary node that may touch: its DoFs (owned, local indices) and position. */
     struct Node
@@ -147,11 +148,11 @@ namespace PeriArlequin
       Point<dim>                    position;
     };
 
-    std::string             point_text;
-    Point<dim>              wall_point;
-    Tensor<1, dim>          normal;
-    std::set<unsigned int>  boundary_ids;
-    std::vector<Node>       nodes;
+    std::string            point_text;
+    Point<dim>             wall_point;
+    Tensor<1, dim>         normal;
+    std::set<unsigned int> boundary_ids;
+    std::vector<Node>      nodes;
   };
 
   /**
@@ -185,12 +186,13 @@ namespace PeriArlequin
     void
     initialize(const FEZone<dim> &zone) override;
     void
-    enforce(const double                         time_step,
+    enforce(const double                             time_step,
             const typename Contact<dim>::VectorType &mass,
             const typename Contact<dim>::VectorType &displacement,
             const typename Contact<dim>::VectorType &velocity,
             typename Contact<dim>::VectorType       &acceleration,
             typename Contact<dim>::VectorType       &applied_force) override;
+
   private:
     /** A striker vertex and the target face it projects onto. */
     struct Pair
@@ -223,7 +225,7 @@ namespace PeriArlequin
     double
     pair_gap(const Pair &pair, const std::vector<Point<dim>> &x) const;
 
-    std::set<unsigned int>   striker_ids, target_ids;
+    std::set<unsigned int> striker_ids, target_ids;
     /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
     std::vector<BoundaryVertex<dim>> nodes;
     std::vector<Pair>                pairs;
@@ -235,7 +237,7 @@ namespace PeriArlequin
     /** Striker nodes this rank owns (a pair's force counts where its striker node lives). */
     std::vector<bool> striker_owned_here;
     /** The smallest target face diameter [m]: the scale of the gap tolerances. */
-    double            face_size = 0;
+    double face_size = 0;
   };
 } // namespace PeriArlequin
 
@@ -244,12 +246,11 @@ namespace PeriArlequin
  * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
  * @p name.
  */
-#define PERIARLEQUIN_REGISTER_CONTACT(classname, name, description)                          \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_contact_##classname =                                 \
-      PeriArlequin::register_plugin_template<PeriArlequin::Contact, classname>(name,         \
-                                                                               description); \
+#define PERIARLEQUIN_REGISTER_CONTACT(classname, name, description)                                \
+  namespace                                                                                        \
+  {                                                                                                \
+    const bool periarlequin_registered_contact_##classname =                                       \
+      PeriArlequin::register_plugin_template<PeriArlequin::Contact, classname>(name, description); \
   }
 
 #endif

@@ -1,6 +1,12 @@
 #ifndef periarlequin_fe_fe_zone_h
 #define periarlequin_fe_fe_zone_h
 
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/base/problem_data.h>
+#include <periarlequin/fe/contact.h>
+#include <periarlequin/fe/owned_rows_matrix.h>
+#include <periarlequin/time/integrated_zone.h>
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/distributed/solution_transfer.h>
@@ -11,12 +17,6 @@
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-
-#include <periarlequin/base/parameters.h>
-#include <periarlequin/base/problem_data.h>
-#include <periarlequin/fe/contact.h>
-#include <periarlequin/fe/owned_rows_matrix.h>
-#include <periarlequin/time/integrated_zone.h>
 
 #include <functional>
 #include <memory>
@@ -189,8 +189,7 @@ namespace PeriArlequin
                    std::vector<unsigned int> &components) const;
 
     /** A locally owned cell with FE DoFs and the unit coordinates of a point in it. */
-    using PointLocation =
-      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>;
+    using PointLocation = std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>;
 
     /**
      * Where @p point lies if a locally owned cell with FE DoFs holds it (within 1e-10 in
@@ -284,34 +283,33 @@ namespace PeriArlequin
     IndexSet                                         locally_owned_dofs;
     IndexSet                                         locally_relevant_dofs;
     /** K_alpha, its owned rows (the products run on threads). */
-    OwnedRowsMatrix                                  stiffness_matrix;
-    VectorType                                       mass;
+    OwnedRowsMatrix stiffness_matrix;
+    VectorType      mass;
     /** The vector component of each owned DoF, in local order. */
-    std::vector<unsigned char>                       owned_dof_component;
-    WeightFunction                                   mass_weight, stiffness_weight;
+    std::vector<unsigned char> owned_dof_component;
+    WeightFunction             mass_weight, stiffness_weight;
     /** The cells that carry FE_Q (the others carry FE_Nothing). */
-    CellPredicate                                    fe_cells;
-    std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
-      solution_transfer;
+    CellPredicate                                                             fe_cells;
+    std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>> solution_transfer;
 
-    const ProblemData<dim>                          *problem_data = nullptr;
-    double                                           time_step    = 0;
-    State                                            state;
-    VectorType                                       internal_force, applied_force;
-    VectorType                                       previous_applied_force;
-    VectorType                                       previous_displacement;
-    VectorType                                       interface_force;
-    std::vector<PrescribedDoF>                       prescribed;
+    const ProblemData<dim>    *problem_data = nullptr;
+    double                     time_step    = 0;
+    State                      state;
+    VectorType                 internal_force, applied_force;
+    VectorType                 previous_applied_force;
+    VectorType                 previous_displacement;
+    VectorType                 interface_force;
+    std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */
-    std::vector<double>                              prescribed_velocity;
-    std::vector<double>                              prescribed_acceleration;
-    std::vector<double>                              nodal_force_weights;
-    std::function<void(VectorType &)>                add_interface_force;
-    std::function<void(double, VectorType &)>        add_additional_load;
-    Contact<dim>                                    *contact = nullptr;
+    std::vector<double>                       prescribed_velocity;
+    std::vector<double>                       prescribed_acceleration;
+    std::vector<double>                       nodal_force_weights;
+    std::function<void(VectorType &)>         add_interface_force;
+    std::function<void(double, VectorType &)> add_additional_load;
+    Contact<dim>                             *contact = nullptr;
     /** Whether any load or support does work (otherwise the work is not accounted). */
-    bool                                             tracks_work = false;
-    double                                           work        = 0;
+    bool   tracks_work = false;
+    double work        = 0;
   };
 } // namespace PeriArlequin
 

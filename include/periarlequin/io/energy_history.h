@@ -40,7 +40,8 @@ namespace PeriArlequin
      * is written anew with them.
      */
     void
-    restore(const std::vector<std::string> &column_names, const std::vector<std::vector<double>> &rows);
+    restore(const std::vector<std::string>         &column_names,
+            const std::vector<std::vector<double>> &rows);
     /** The values of one named column over all rows. */
     std::vector<double>
     column(const std::string &name) const;
@@ -57,9 +58,9 @@ namespace PeriArlequin
     std::vector<std::string>         names;
     std::vector<std::vector<double>> table;
     /** The current row: names and values in the order given. */
-    std::vector<std::string>         row_names;
-    std::vector<double>              row_values;
-    std::ofstream                    csv;
+    std::vector<std::string> row_names;
+    std::vector<double>      row_values;
+    std::ofstream            csv;
   };
 } // namespace PeriArlequin
 

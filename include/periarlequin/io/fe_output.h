@@ -1,11 +1,11 @@
 #ifndef periarlequin_io_fe_output_h
 #define periarlequin_io_fe_output_h
 
-#include <deal.II/lac/la_parallel_vector.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/pvd_series.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <string>
 #include <utility>
@@ -27,8 +27,8 @@ namespace PeriArlequin
     FEOutput(const FEZone<dim> &fe_zone, const Parameters::Output &parameters);
 
     void
-    write(const unsigned int                                 step,
-          const double                                       time,
+    write(const unsigned int                                step,
+          const double                                      time,
           const LinearAlgebra::distributed::Vector<double> &displacement,
           const LinearAlgebra::distributed::Vector<double> &velocity);
 
@@ -37,9 +37,9 @@ namespace PeriArlequin
     get_series();
 
   private:
-    const FEZone<dim>                        &fe_zone;
-    const Parameters::Output                  parameters;
-    PVDSeries                                   series;
+    const FEZone<dim>       &fe_zone;
+    const Parameters::Output parameters;
+    PVDSeries                series;
   };
 } // namespace PeriArlequin
 

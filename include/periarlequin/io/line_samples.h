@@ -1,21 +1,21 @@
 #ifndef periarlequin_io_line_samples_h
 #define periarlequin_io_line_samples_h
 
-#include <deal.II/base/point.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/point.h>
 
 namespace PeriArlequin
 {
   using namespace dealii;
 
   /**
-   * Displacements and velocities along a segment (Output/Sample line) at the output steps: the FE nodes on
-   * the segment and the PD particles within dx/2 of it, gathered on rank 0 into
-   * \<base\>_line_\<step\>.csv (zone, position, displacement, velocity), sorted by zone and position so
-   * that the file does not depend on the partition.
+   * Displacements and velocities along a segment (Output/Sample line) at the output steps: the FE
+   * nodes on the segment and the PD particles within dx/2 of it, gathered on rank 0 into
+   * \<base\>_line_\<step\>.csv (zone, position, displacement, velocity), sorted by zone and
+   * position so that the file does not depend on the partition.
    */
   template <int dim>
   class LineSamples

@@ -1,10 +1,10 @@
 #ifndef periarlequin_io_pvd_series_h
 #define periarlequin_io_pvd_series_h
 
+#include <periarlequin/base/parameters.h>
+
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
-
-#include <periarlequin/base/parameters.h>
 
 #include <string>
 #include <utility>

@@ -1,12 +1,12 @@
 #ifndef periarlequin_pd_bond_families_h
 #define periarlequin_pd_bond_families_h
 
-#include <deal.II/base/tensor.h>
-
 #include <periarlequin/base/regions.h>
 #include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
 #include <periarlequin/pd/stencil_layout.h>
+
+#include <deal.II/base/tensor.h>
 
 #include <array>
 #include <cstdint>
@@ -53,7 +53,8 @@ namespace PeriArlequin
     /** How the material models loop over the bonds (Peridynamics/Force kernel). */
     enum class Kernel
     {
-      /** The stencil unless the padded box holds more than max_stencil_fill_ratio slots a particle. */
+      /** The stencil unless the padded box holds more than max_stencil_fill_ratio slots a particle.
+       */
       automatic,
       stencil,
       /** The CSR arrays. */
@@ -86,12 +87,12 @@ namespace PeriArlequin
      * ghosts.
      */
     void
-    build(const Lattice<dim>                           &lattice,
-          GhostExchange<dim>                           &ghosts,
+    build(const Lattice<dim>                            &lattice,
+          GhostExchange<dim>                            &ghosts,
           const std::function<bool(const Point<dim> &)> &extent,
-          const std::vector<PreCrack<dim>>             &pre_cracks,
+          const std::vector<PreCrack<dim>>              &pre_cracks,
           const std::function<bool(const Point<dim> &)> &no_fail,
-          const Kernel                                  kernel = Kernel::automatic);
+          const Kernel                                   kernel = Kernel::automatic);
 
     /** Whether the models loop over the stencil layout (else over the CSR arrays). */
     bool
@@ -105,7 +106,8 @@ namespace PeriArlequin
     {
       return layout;
     }
-    /** Call after changing entries of state (a fracture criterion did): refreshes the stencil view. */
+    /** Call after changing entries of state (a fracture criterion did): refreshes the stencil view.
+     */
     void
     states_changed();
 
@@ -121,7 +123,7 @@ namespace PeriArlequin
     /** Owned plus ghost particles. */
     unsigned int n_total = 0;
 
-    std::vector<StencilEntry>  stencil;
+    std::vector<StencilEntry> stencil;
     /** The stored bonds of owned particle i are n in [family_begin[i], family_begin[i + 1]). */
     std::vector<unsigned int>  family_begin;
     std::vector<std::uint16_t> stencil_index;
@@ -150,14 +152,16 @@ namespace PeriArlequin
       return stencil_index.size();
     }
 
-    /** The local index (owned or ghost) of the neighbour of stored bond @p n of owned particle @p i. */
+    /** The local index (owned or ghost) of the neighbour of stored bond @p n of owned particle @p
+     * i. */
     unsigned int
     neighbor(const unsigned int i, const std::size_t n) const
     {
       return stencil_active ? layout.neighbor(i, stencil_index[n]) : neighbor_index[n];
     }
 
-    /** Whether the neighbour of stored bond @p n of owned particle @p i is owned (and so takes its share). */
+    /** Whether the neighbour of stored bond @p n of owned particle @p i is owned (and so takes its
+     * share). */
     bool
     neighbor_is_owned(const unsigned int i, const std::size_t n) const
     {

@@ -1,14 +1,14 @@
 #ifndef periarlequin_pd_fracture_criterion_h
 #define periarlequin_pd_fracture_criterion_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/array_view.h>
-#include <deal.II/base/tensor.h>
-
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/pd/bond_families.h>
 #include <periarlequin/pd/material_model.h>
 #include <periarlequin/pd/pd_parameters.h>
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
 
 #include <vector>
 
@@ -55,15 +55,15 @@ namespace PeriArlequin
      * Mark the intact bonds of the owned particles' families that fail under the
      * displacements @p displacement (owned and ghost particles) as broken; @p scalars are
      * the material model's particle scalars (owned and ghost) of these displacements if
-     * needs_particle_scalars(), otherwise of the last force evaluation. A bond to a ghost is held by two ranks, which
-     * must decide alike: decide from the bond's reference vector, the displacement
-     * difference of its ends (BondFamilies::extension is bit-identical on both) and
+     * needs_particle_scalars(), otherwise of the last force evaluation. A bond to a ghost is held
+     * by two ranks, which must decide alike: decide from the bond's reference vector, the
+     * displacement difference of its ends (BondFamilies::extension is bit-identical on both) and
      * symmetric functions of the scalars of its ends. Returns whether a bond broke here.
      */
     virtual bool
-    break_bonds(BondFamilies<dim>               &bonds,
-                ArrayView<const Tensor<1, dim>>  displacement,
-                ArrayView<const double>          scalars) const = 0;
+    break_bonds(BondFamilies<dim>              &bonds,
+                ArrayView<const Tensor<1, dim>> displacement,
+                ArrayView<const double>         scalars) const = 0;
 
     /** The critical bond stretch [-] for the run's summary; 0 if the criterion has none. */
     virtual double
@@ -91,9 +91,9 @@ namespace PeriArlequin
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
     bool
-    break_bonds(BondFamilies<dim>               &bonds,
-                ArrayView<const Tensor<1, dim>>  displacement,
-                ArrayView<const double>          scalars) const override;
+    break_bonds(BondFamilies<dim>              &bonds,
+                ArrayView<const Tensor<1, dim>> displacement,
+                ArrayView<const double>         scalars) const override;
     double
     critical_stretch() const override;
 
@@ -120,9 +120,9 @@ namespace PeriArlequin
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
     bool
-    break_bonds(BondFamilies<dim>               &bonds,
-                ArrayView<const Tensor<1, dim>>  displacement,
-                ArrayView<const double>          scalars) const override;
+    break_bonds(BondFamilies<dim>              &bonds,
+                ArrayView<const Tensor<1, dim>> displacement,
+                ArrayView<const double>         scalars) const override;
     bool
     needs_particle_scalars() const override;
     double
@@ -133,7 +133,7 @@ namespace PeriArlequin
     critical_energy() const;
 
   private:
-    const PDMaterialModel<dim> *model           = nullptr;
+    const PDMaterialModel<dim> *model            = nullptr;
     double                      critical_energy_ = 0;
     mutable std::vector<double> pair_energy;
   };
@@ -144,12 +144,13 @@ namespace PeriArlequin
  * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
  * @p name.
  */
-#define PERIARLEQUIN_REGISTER_FRACTURE_CRITERION(classname, name, description)               \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_fracture_criterion_##classname =                      \
-      PeriArlequin::register_plugin_template<PeriArlequin::FractureCriterion, classname>(    \
-        name, description);                                                                  \
+#define PERIARLEQUIN_REGISTER_FRACTURE_CRITERION(classname, name, description)            \
+  namespace                                                                               \
+  {                                                                                       \
+    const bool periarlequin_registered_fracture_criterion_##classname =                   \
+      PeriArlequin::register_plugin_template<PeriArlequin::FractureCriterion, classname>( \
+        name,                                                                             \
+        description);                                                                     \
   }
 
 #endif

@@ -76,12 +76,12 @@ namespace PeriArlequin
     std::vector<Point<dim>>                                 positions;
     std::unordered_map<types::particle_index, unsigned int> index_of_id;
     /** The consecutive number of the first owned particle, and those of the ghosts. */
-    types::global_dof_index                                 first_index = 0;
-    std::vector<types::global_dof_index>                    ghost_indices;
-    types::global_dof_index                                 n_global      = 0;
+    types::global_dof_index                                              first_index = 0;
+    std::vector<types::global_dof_index>                                 ghost_indices;
+    types::global_dof_index                                              n_global = 0;
     std::map<unsigned int, std::unique_ptr<Utilities::MPI::Partitioner>> partitioners;
-    std::vector<double>                                     send_buffer;
-    std::vector<MPI_Request>                                requests;
+    std::vector<double>                                                  send_buffer;
+    std::vector<MPI_Request>                                             requests;
   };
 } // namespace PeriArlequin
 

@@ -81,8 +81,8 @@ namespace PeriArlequin
       {
         const double first = std::ceil((lower[d] - origin[d]) / dx - 0.5);
         const double end   = std::ceil((upper[d] - origin[d]) / dx - 0.5);
-        range[d] = {static_cast<unsigned int>(std::max(first, 0.)),
-                    static_cast<unsigned int>(
+        range[d]           = {static_cast<unsigned int>(std::max(first, 0.)),
+                              static_cast<unsigned int>(
                       std::min(std::max(end, 0.), static_cast<double>(n_sites[d])))};
       }
     Site       site;

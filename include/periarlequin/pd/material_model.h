@@ -1,13 +1,13 @@
 #ifndef periarlequin_pd_material_model_h
 #define periarlequin_pd_material_model_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/array_view.h>
-#include <deal.II/base/tensor.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/pd/bond_families.h>
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
 
 #include <memory>
 #include <string>
@@ -60,9 +60,9 @@ namespace PeriArlequin
 
     /** Fill scalars[n_particle_scalars() * i + k] for every owned particle i. */
     virtual void
-    compute_particle_scalars(const BondFamilies<dim>          &bonds,
-                             ArrayView<const Tensor<1, dim>>  displacement,
-                             std::vector<double>               &scalars) const = 0;
+    compute_particle_scalars(const BondFamilies<dim>        &bonds,
+                             ArrayView<const Tensor<1, dim>> displacement,
+                             std::vector<double>            &scalars) const = 0;
 
     /**
      * Force density [N/m^3] and strain-energy density [J/m^3] of every owned particle, from
@@ -72,12 +72,12 @@ namespace PeriArlequin
      * -d/du_I sum_K state_weight[K] W_K V_K / V_I, and energy_density[I] = state_weight[I] W_I.
      */
     virtual void
-    compute_forces(const BondFamilies<dim>          &bonds,
-                   ArrayView<const Tensor<1, dim>>  displacement,
-                   const std::vector<double>         &scalars,
-                   const std::vector<double>         &state_weight,
-                   std::vector<Tensor<1, dim>>       &force_density,
-                   std::vector<double>               &energy_density) const = 0;
+    compute_forces(const BondFamilies<dim>        &bonds,
+                   ArrayView<const Tensor<1, dim>> displacement,
+                   const std::vector<double>      &scalars,
+                   const std::vector<double>      &state_weight,
+                   std::vector<Tensor<1, dim>>    &force_density,
+                   std::vector<double>            &energy_density) const = 0;
 
     /** Critical bond stretch for the critical energy release rate G0 [J/m^2]. */
     virtual double
@@ -91,10 +91,10 @@ namespace PeriArlequin
      * used with it). Both ranks that hold a bond to a ghost must get the same value.
      */
     virtual void
-    compute_pair_energies(const BondFamilies<dim>          &bonds,
-                          ArrayView<const Tensor<1, dim>>  displacement,
-                          ArrayView<const double>           scalars,
-                          std::vector<double>               &pair_energy) const;
+    compute_pair_energies(const BondFamilies<dim>        &bonds,
+                          ArrayView<const Tensor<1, dim>> displacement,
+                          ArrayView<const double>         scalars,
+                          std::vector<double>            &pair_energy) const;
   };
 
   /** The open registry of PD material models, by name. */
@@ -137,16 +137,16 @@ namespace PeriArlequin
     std::vector<std::string>
     particle_scalar_names() const override;
     void
-    compute_particle_scalars(const BondFamilies<dim>          &bonds,
-                             ArrayView<const Tensor<1, dim>>  displacement,
-                             std::vector<double>               &scalars) const override;
+    compute_particle_scalars(const BondFamilies<dim>        &bonds,
+                             ArrayView<const Tensor<1, dim>> displacement,
+                             std::vector<double>            &scalars) const override;
     void
-    compute_forces(const BondFamilies<dim>          &bonds,
-                   ArrayView<const Tensor<1, dim>>  displacement,
-                   const std::vector<double>         &scalars,
-                   const std::vector<double>         &state_weight,
-                   std::vector<Tensor<1, dim>>       &force_density,
-                   std::vector<double>               &energy_density) const override;
+    compute_forces(const BondFamilies<dim>        &bonds,
+                   ArrayView<const Tensor<1, dim>> displacement,
+                   const std::vector<double>      &scalars,
+                   const std::vector<double>      &state_weight,
+                   std::vector<Tensor<1, dim>>    &force_density,
+                   std::vector<double>            &energy_density) const override;
     double
     critical_stretch(const double energy_release_rate, const double horizon) const override;
     /**
@@ -154,10 +154,10 @@ namespace PeriArlequin
      * half the pair force times the extension, (t_ij + t_ji) e / 2, splits it exactly.
      */
     void
-    compute_pair_energies(const BondFamilies<dim>          &bonds,
-                          ArrayView<const Tensor<1, dim>>  displacement,
-                          ArrayView<const double>           scalars,
-                          std::vector<double>               &pair_energy) const override;
+    compute_pair_energies(const BondFamilies<dim>        &bonds,
+                          ArrayView<const Tensor<1, dim>> displacement,
+                          ArrayView<const double>         scalars,
+                          std::vector<double>            &pair_energy) const override;
 
   private:
     /**
@@ -166,23 +166,23 @@ namespace PeriArlequin
      * coefficients[3 j + 1] = alpha - beta theta / 3, coefficients[3 j + 2] = theta / 3.
      */
     void
-    compute_coefficients(const BondFamilies<dim>    &bonds,
-                         ArrayView<const double>     scalars,
-                         const std::vector<double>  &state_weight) const;
+    compute_coefficients(const BondFamilies<dim>   &bonds,
+                         ArrayView<const double>    scalars,
+                         const std::vector<double> &state_weight) const;
 
     /** compute_particle_scalars() on the stencil layout of @p bonds. */
     void
-    compute_particle_scalars_on_stencil(const BondFamilies<dim>         &bonds,
+    compute_particle_scalars_on_stencil(const BondFamilies<dim>        &bonds,
                                         ArrayView<const Tensor<1, dim>> displacement,
-                                        std::vector<double>             &scalars) const;
+                                        std::vector<double>            &scalars) const;
     /** compute_forces() on the stencil layout of @p bonds. */
     void
-    compute_forces_on_stencil(const BondFamilies<dim>         &bonds,
+    compute_forces_on_stencil(const BondFamilies<dim>        &bonds,
                               ArrayView<const Tensor<1, dim>> displacement,
-                              const std::vector<double>       &scalars,
-                              const std::vector<double>       &state_weight,
-                              std::vector<Tensor<1, dim>>     &force_density,
-                              std::vector<double>             &energy_density) const;
+                              const std::vector<double>      &scalars,
+                              const std::vector<double>      &state_weight,
+                              std::vector<Tensor<1, dim>>    &force_density,
+                              std::vector<double>            &energy_density) const;
     /** The displacements of the held particles in the box slots, one array per component. */
     void
     gather_displacements(const StencilLayout<dim>       &layout,
@@ -190,7 +190,7 @@ namespace PeriArlequin
 
     double                      c = 0, k = 0, b = 0;
     double                      youngs_modulus = 0, bulk_modulus = 0;
-    bool                        plane_strain   = false;
+    bool                        plane_strain = false;
     mutable std::vector<double> coefficients;
     mutable std::vector<double> moments;
 
@@ -211,12 +211,13 @@ namespace PeriArlequin
  * @p name, e.g.
  * PERIARLEQUIN_REGISTER_PD_MATERIAL(MyBondBasedModel, "PMB", "prototype micro-elastic").
  */
-#define PERIARLEQUIN_REGISTER_PD_MATERIAL(classname, name, description)                      \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_material_##classname =                                \
-      PeriArlequin::register_plugin_template<PeriArlequin::PDMaterialModel, classname>(      \
-        name, description);                                                                  \
+#define PERIARLEQUIN_REGISTER_PD_MATERIAL(classname, name, description)                 \
+  namespace                                                                             \
+  {                                                                                     \
+    const bool periarlequin_registered_material_##classname =                           \
+      PeriArlequin::register_plugin_template<PeriArlequin::PDMaterialModel, classname>( \
+        name,                                                                           \
+        description);                                                                   \
   }
 
 #endif

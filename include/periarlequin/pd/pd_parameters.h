@@ -1,12 +1,12 @@
 #ifndef periarlequin_pd_pd_parameters_h
 #define periarlequin_pd_pd_parameters_h
 
+#include <periarlequin/base/problem_data.h>
+#include <periarlequin/base/regions.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/fe/component_mask.h>
-
-#include <periarlequin/base/problem_data.h>
-#include <periarlequin/base/regions.h>
 
 #include <array>
 #include <memory>
@@ -43,19 +43,19 @@ namespace PeriArlequin
     {
       static constexpr unsigned int n_prescribed_regions = 4;
 
-      Region<dim>                 region;
-      double                      lattice_spacing = 0.0025;
-      double                      horizon_factor  = 3.015;
-      std::string                 material_model  = "LPS";
+      Region<dim> region;
+      double      lattice_spacing = 0.0025;
+      double      horizon_factor  = 3.015;
+      std::string material_model  = "LPS";
       /** How the model loops over the bonds: automatic, stencil or bond list. */
-      std::string                 force_kernel    = "automatic";
-      bool                        fracture        = false;
+      std::string force_kernel = "automatic";
+      bool        fracture     = false;
       /** The registered fracture criterion used when fracture is on. */
-      std::string                 fracture_criterion  = "critical stretch";
-      double                      energy_release_rate = 0;
-      double                      critical_stretch    = 0;
-      std::vector<PreCrack<dim>>  pre_cracks;
-      Region<dim>                 no_fail_region;
+      std::string                fracture_criterion  = "critical stretch";
+      double                     energy_release_rate = 0;
+      double                     critical_stretch    = 0;
+      std::vector<PreCrack<dim>> pre_cracks;
+      Region<dim>                no_fail_region;
       std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
 
       void
@@ -63,6 +63,14 @@ namespace PeriArlequin
 
       double
       horizon() const;
+
+      /**
+       * How far beyond the PD part of a coupled case the particles reach: two bond reaches,
+       * 2 (delta + dx/2), so that no weighted particle has a cut family and neither has any
+       * of its neighbours, whose dilatation enters its force [m].
+       */
+      double
+      coupled_particle_reach() const;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -1,14 +1,6 @@
 #ifndef periarlequin_pd_pd_zone_h
 #define periarlequin_pd_pd_zone_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/parsed_function.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/fe/component_mask.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/lac/vector.h>
-#include <deal.II/particles/particle_handler.h>
-
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/base/regions.h>
@@ -16,11 +8,19 @@
 #include <periarlequin/pd/fracture_criterion.h>
 #include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
-#include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/material_model.h>
 #include <periarlequin/pd/particle_state.h>
+#include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/prescribed_particles.h>
 #include <periarlequin/time/integrated_zone.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/particles/particle_handler.h>
 
 #include <array>
 #include <functional>
@@ -324,7 +324,7 @@ namespace PeriArlequin
      */
     bool
     owns_site(const typename Triangulation<dim>::active_cell_iterator &cell,
-              const Point<dim>                                         &x) const;
+              const Point<dim>                                        &x) const;
     /**
      * On a general mesh the PD zone takes no boundary layers: a clear error if a particle
      * that is not a slave lies within @p depth of a boundary with a traction or displacement.
@@ -363,13 +363,21 @@ namespace PeriArlequin
      * its position and lattice id.
      */
     void
-    insert_particles(
-      const std::function<bool(const Point<dim> &, types::particle_index)> &accept);
+    insert_particles(const std::function<bool(const Point<dim> &, types::particle_index)> &accept);
     /** Local numbers, ghosts, bonds, weights, model and prescribed particles. */
     void
     build_particle_structures();
     void
     check_horizon_covered() const;
+    /**
+     * Before anything is filled: refuse a lattice whose ids do not fit the particle index
+     * type, a horizon whose stencil is absurdly large, and a zone whose particles and bonds
+     * would not fit the memory of the ranks' nodes (Lattice spacing, Horizon factor, Region
+     * named with the counts and the memory). @p coupled: the zone reaches
+     * Peridynamics::coupled_particle_reach() beyond its region.
+     */
+    void
+    check_lattice_fits(const bool coupled) const;
     void
     compute_blending_weights();
     /**
@@ -413,34 +421,34 @@ namespace PeriArlequin
      * hexahedra, a lattice site belongs to the cell that holds it (owns_site()), not to the
      * axis-aligned box of a cell.
      */
-    bool                                       general_cells;
+    bool general_cells;
     /** While particles are inserted into a general mesh: the cells around each vertex. */
     std::vector<std::set<typename Triangulation<dim>::active_cell_iterator>> vertex_to_cells;
-    Particles::ParticleHandler<dim>            particle_handler;
-    GhostExchange<dim>                         ghosts;
-    ParticleState<dim>                         state;
-    BondFamilies<dim>                          bonds;
-    std::unique_ptr<PDMaterialModel<dim>>      model;
-    std::unique_ptr<FractureCriterion<dim>>    fracture;
-    PrescribedParticles<dim>                   prescribed;
-    SiteFilter                                 extent;
+    Particles::ParticleHandler<dim>                                          particle_handler;
+    GhostExchange<dim>                                                       ghosts;
+    ParticleState<dim>                                                       state;
+    BondFamilies<dim>                                                        bonds;
+    std::unique_ptr<PDMaterialModel<dim>>                                    model;
+    std::unique_ptr<FractureCriterion<dim>>                                  fracture;
+    PrescribedParticles<dim>                                                 prescribed;
+    SiteFilter                                                               extent;
     /** The pure PD region (Peridynamics/Region, grown by set_region()). */
-    Region<dim>                                region;
-    Box<dim>                                   domain;
-    WeightFunction                             blending_weight;
-    bool                                       energy_blending     = false;
-    double                                     minimum_weight      = 1.;
-    const ProblemData<dim>                    *problem_data        = nullptr;
-    Lattice<dim>                               lattice;
-    double                                     time_step           = 0;
+    Region<dim>             region;
+    Box<dim>                domain;
+    WeightFunction          blending_weight;
+    bool                    energy_blending = false;
+    double                  minimum_weight  = 1.;
+    const ProblemData<dim> *problem_data    = nullptr;
+    Lattice<dim>            lattice;
+    double                  time_step = 0;
 
     /** Model outputs of owned particles, and its particle scalars (owned and ghosts). */
     std::vector<Tensor<1, dim>> force_density;
     std::vector<double>         energy_density, model_scalars;
     /** Blending weight alpha and strain-energy weight inside the sums (owned and ghost);
      * nodal force weight, mass weight and slave flag (owned). */
-    std::vector<double>         alpha, state_weight, force_weight, mass_weight;
-    std::vector<unsigned char>  slave;
+    std::vector<double>        alpha, state_weight, force_weight, mass_weight;
+    std::vector<unsigned char> slave;
 
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;

@@ -1,10 +1,10 @@
 #ifndef periarlequin_pd_prescribed_particles_h
 #define periarlequin_pd_prescribed_particles_h
 
-#include <deal.II/base/function.h>
-
 #include <periarlequin/pd/particle_state.h>
 #include <periarlequin/pd/pd_parameters.h>
+
+#include <deal.II/base/function.h>
 
 #include <array>
 #include <vector>
@@ -87,7 +87,7 @@ namespace PeriArlequin
     const Parameters::Peridynamics<dim> &parameters;
     std::vector<Particle>                particles;
     /** Is owned particle i prescribed? */
-    std::vector<bool>                    is_prescribed;
+    std::vector<bool> is_prescribed;
   };
 } // namespace PeriArlequin
 

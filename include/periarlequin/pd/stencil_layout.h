@@ -1,10 +1,10 @@
 #ifndef periarlequin_pd_stencil_layout_h
 #define periarlequin_pd_stencil_layout_h
 
+#include <periarlequin/pd/lattice.h>
+
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/types.h>
-
-#include <periarlequin/pd/lattice.h>
 
 #include <array>
 #include <cstddef>
@@ -49,7 +49,7 @@ namespace PeriArlequin
     struct Run
     {
       /** First slot. */
-      std::size_t begin;
+      std::size_t  begin;
       unsigned int length;
       /** Its bond states: mask[mask_begin + h length + (s - begin)] for half offset h. */
       std::size_t mask_begin;
@@ -68,9 +68,9 @@ namespace PeriArlequin
      * until update_mask().
      */
     void
-    place(const Lattice<dim>                     &lattice,
+    place(const Lattice<dim>                    &lattice,
           ArrayView<const types::particle_index> ids,
-          const BondFamilies<dim>                &bonds);
+          const BondFamilies<dim>               &bonds);
 
     /** The bond states from the CSR states of @p bonds (after they were built or bonds broke). */
     void
@@ -98,7 +98,8 @@ namespace PeriArlequin
     double
     fill_ratio() const;
 
-    /** Changes whenever the bond states change (unique over all layouts): for caches of what derives from them. */
+    /** Changes whenever the bond states change (unique over all layouts): for caches of what
+     * derives from them. */
     unsigned int
     mask_version() const
     {
@@ -106,9 +107,9 @@ namespace PeriArlequin
     }
 
     /** The slot of every held particle, by local index. */
-    std::vector<std::size_t> slot;
-    std::vector<Run>         runs;
-    std::vector<HalfOffset>  half_offsets;
+    std::vector<std::size_t>  slot;
+    std::vector<Run>          runs;
+    std::vector<HalfOffset>   half_offsets;
     std::vector<std::uint8_t> mask;
     /**
      * Per (run, half offset), run-major: the slots [first, end) of the run, counted from its
@@ -141,7 +142,7 @@ namespace PeriArlequin
     std::vector<std::ptrdiff_t> entry_shift;
     /** The local index of the particle in every slot of the box, or invalid_unsigned_int. */
     std::vector<unsigned int> local_of_slot;
-    std::size_t                  n_box_slots = 0;
+    std::size_t               n_box_slots = 0;
     /** The run of each lattice line of the box (by slot / stride[1]), or -1. */
     std::vector<int> run_of_line;
     unsigned int     n_held  = 0;

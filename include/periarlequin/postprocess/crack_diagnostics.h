@@ -1,11 +1,11 @@
 #ifndef periarlequin_postprocess_crack_diagnostics_h
 #define periarlequin_postprocess_crack_diagnostics_h
 
-#include <deal.II/base/point.h>
-#include <deal.II/base/mpi.h>
-#include <deal.II/particles/property_pool.h>
-
 #include <periarlequin/postprocess/postprocessor.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/particles/property_pool.h>
 
 #include <array>
 #include <limits>
@@ -126,10 +126,10 @@ namespace PeriArlequin
      * @p direction [rad]; @p fit_range: the least and largest distance from the tip of the
      * particles the kink angle fits [m].
      */
-    CrackInitiation(const Point<dim>             &tip,
-                    const double                  direction,
-                    const double                  horizon,
-                    const std::array<double, 2>  &fit_range);
+    CrackInitiation(const Point<dim>            &tip,
+                    const double                 direction,
+                    const double                 horizon,
+                    const std::array<double, 2> &fit_range);
 
     /**
      * The cracked particles at @p time (the same on every rank) and the number of broken bonds
@@ -160,22 +160,23 @@ namespace PeriArlequin
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &tip &direction &horizon &fit_range[0] &fit_range[1] &first_record
-        &initial_broken_near_tip &initially_cracked &initiation &growth &angle &n_fitted;
+      archive &tip &direction &horizon &fit_range[0] & fit_range[1] &
+        first_record &initial_broken_near_tip &initially_cracked &initiation &growth &angle
+          &n_fitted;
     }
 
   private:
-    Point<dim>                        tip;
-    Tensor<1, 2>                      direction;
-    double                            horizon;
-    std::array<double, 2>             fit_range;
-    bool                              first_record = true;
-    unsigned long long                initial_broken_near_tip = 0;
-    std::set<types::particle_index>   initially_cracked;
-    double                            initiation = std::numeric_limits<double>::quiet_NaN();
-    double                            growth     = std::numeric_limits<double>::quiet_NaN();
-    double                            angle      = std::numeric_limits<double>::quiet_NaN();
-    unsigned int                      n_fitted   = 0;
+    Point<dim>                      tip;
+    Tensor<1, 2>                    direction;
+    double                          horizon;
+    std::array<double, 2>           fit_range;
+    bool                            first_record            = true;
+    unsigned long long              initial_broken_near_tip = 0;
+    std::set<types::particle_index> initially_cracked;
+    double                          initiation = std::numeric_limits<double>::quiet_NaN();
+    double                          growth     = std::numeric_limits<double>::quiet_NaN();
+    double                          angle      = std::numeric_limits<double>::quiet_NaN();
+    unsigned int                    n_fitted   = 0;
   };
 
   /**
@@ -229,25 +230,25 @@ namespace PeriArlequin
     void
     write_damage_map(const Simulator<dim> &simulator) const;
 
-    double                             damage_threshold   = 0.35;
+    double damage_threshold = 0.35;
     /** In lattice spacings. */
-    double                             link_distance      = 2.;
+    double link_distance = 2.;
     /** In horizons. */
-    double                             branch_separation  = 2.;
-    unsigned int                       speed_window       = 5;
-    unsigned int                       reported_branches  = 4;
+    double                             branch_separation = 2.;
+    unsigned int                       speed_window      = 5;
+    unsigned int                       reported_branches = 4;
     std::unique_ptr<CrackTracker<dim>> tracker;
     /** Without an initial tip, no initiation and kink diagnostics. */
-    bool                               has_initial_tip = false;
-    Point<dim>                         initial_tip;
+    bool       has_initial_tip = false;
+    Point<dim> initial_tip;
     /** In degrees. */
-    double                             initial_direction = 0;
+    double initial_direction = 0;
     /** In horizons. */
-    std::array<double, 2>              kink_fit_range    = {{1., 5.}};
+    std::array<double, 2>                 kink_fit_range = {{1., 5.}};
     std::unique_ptr<CrackInitiation<dim>> initiation;
     /** K_I, K_II [Pa m^(1/2)] and G [J/m^2] of the crack-tip field at initiation and growth. */
     std::array<double, 3> load_at_initiation, load_at_growth;
-    double                             initial_area = 0;
+    double                initial_area = 0;
     /** Damaged particles (id, position, damage) of the last record, sorted by id. */
     std::vector<std::pair<typename CrackTracker<dim>::CrackedParticle, double>> damaged;
   };

@@ -1,11 +1,11 @@
 #ifndef periarlequin_postprocess_postprocessor_h
 #define periarlequin_postprocess_postprocessor_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/io/energy_history.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <array>
 #include <optional>
@@ -153,7 +153,7 @@ namespace PeriArlequin
     bool                       located = false;
     /** Per point: the FE location on this rank, if any, and the rank that evaluates it. */
     std::vector<std::optional<typename FEZone<dim>::PointLocation>> fe_locations;
-    std::vector<unsigned int>                                      fe_owner;
+    std::vector<unsigned int>                                       fe_owner;
     /** Per point without FE: the nearest particle (local index) on the rank that has it. */
     std::vector<unsigned int> particle;
     std::vector<unsigned int> particle_owner;
@@ -188,12 +188,12 @@ namespace PeriArlequin
  * constructed; with its static declare_parameters(ParameterHandler &) if it has one) under
  * @p name.
  */
-#define PERIARLEQUIN_REGISTER_POSTPROCESSOR(classname, name, description)                    \
-  namespace                                                                                  \
-  {                                                                                          \
-    const bool periarlequin_registered_postprocessor_##classname =                           \
-      PeriArlequin::register_plugin_template<PeriArlequin::Postprocessor, classname>(        \
-        name, description);                                                                  \
+#define PERIARLEQUIN_REGISTER_POSTPROCESSOR(classname, name, description)                          \
+  namespace                                                                                        \
+  {                                                                                                \
+    const bool periarlequin_registered_postprocessor_##classname =                                 \
+      PeriArlequin::register_plugin_template<PeriArlequin::Postprocessor, classname>(name,         \
+                                                                                     description); \
   }
 
 #endif

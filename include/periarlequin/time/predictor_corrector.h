@@ -1,11 +1,11 @@
 #ifndef periarlequin_time_predictor_corrector_h
 #define periarlequin_time_predictor_corrector_h
 
-#include <deal.II/base/discrete_time.h>
-#include <deal.II/base/timer.h>
-
 #include <periarlequin/coupling/coupling.h>
 #include <periarlequin/time/integrated_zone.h>
+
+#include <deal.II/base/discrete_time.h>
+#include <deal.II/base/timer.h>
 
 #include <vector>
 

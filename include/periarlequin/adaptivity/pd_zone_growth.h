@@ -1,0 +1,119 @@
+#ifndef periarlequin_adaptivity_pd_zone_growth_h
+#define periarlequin_adaptivity_pd_zone_growth_h
+
+#include <periarlequin/adaptivity/conversion_criterion.h>
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/coupling/blending_field.h>
+#include <periarlequin/fe/fe_zone.h>
+#include <periarlequin/pd/pd_parameters.h>
+#include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    /** Subsection "Adaptive PD zone": which criterion converts FE cells, and how often. */
+    template <int dim>
+    struct AdaptivePDZone
+    {
+      /** "none" (a fixed PD zone) or a registered ConversionCriterion. */
+      std::string  conversion_criterion = "none";
+      unsigned int check_interval       = 10;
+      double       imbalance_tolerance  = 0.1;
+
+      void
+      entries(ParameterEntries &entries);
+    };
+  } // namespace Parameters
+
+  /**
+   * The growth of an adaptive PD zone, between steps: the FE cells that the conversion
+   * criterion flags become pure PD. Their boxes join the PD region; the overlap band and the
+   * slave layer move outward; new particles fill the lattice sites the grown zone needs, with
+   * displacement, velocity and acceleration interpolated from the FE field (which still lives
+   * in the converted cells); the FE zone drops the DoFs of the converted cells; the caller
+   * rebuilds the coupling and the accelerations; the free particles that gained mass take the
+   * momentum the two quadratures of the blended mass disagree on, so that a conversion
+   * conserves linear momentum. Existing particles keep their state and broken bonds.
+   */
+  template <int dim>
+  class PDZoneGrowth
+  {
+  public:
+    /** Declare subsection "Adaptive PD zone" and the criteria's subsections inside it. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * The growth that subsection "Adaptive PD zone" asks for, or nullptr (Conversion
+     * criterion = none). A clear error if the case cannot grow its PD zone (the zones are not
+     * coupled across a band, or the mesh is a Gmsh file).
+     */
+    static std::unique_ptr<PDZoneGrowth<dim>>
+    create(ParameterHandler                    &prm,
+           const Parameters::Coupling          &coupling,
+           const Parameters::Geometry          &geometry,
+           const Parameters::Peridynamics<dim> &pd_parameters);
+
+    PDZoneGrowth(const Parameters::AdaptivePDZone<dim>    &parameters,
+                 std::unique_ptr<ConversionCriterion<dim>> criterion,
+                 const Parameters::Peridynamics<dim>      &pd_parameters);
+
+    /** Check the criterion against the zones once they exist. */
+    void
+    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone);
+
+    /** Is the criterion asked after step @p step (every Check interval steps)? */
+    bool
+    due(const unsigned int step) const;
+
+    /**
+     * Convert the cells the criterion flags (collective). @p rebuild_coupling rebuilds what
+     * depends on the zones (contact, coupling) and the accelerations of the current state.
+     * Returns the number of cells converted over all ranks (0: nothing changed).
+     */
+    unsigned int
+    grow(FEZone<dim>                 &fe_zone,
+         PDZone<dim>                 &pd_zone,
+         BlendingField<dim>          &blending,
+         const std::function<void()> &rebuild_coupling);
+
+    /** Cells converted since the start, over all ranks. */
+    unsigned int
+    n_converted_cells() const;
+
+    /** Sum over the conversions of the change of kinetic plus strain energy each caused [J]. */
+    double
+    energy_change() const;
+
+    /** The totals of a checkpointed run, to go on from. */
+    void
+    restore_totals(const unsigned int converted_cells, const double energy_change);
+
+    /** Adaptive PD zone/Load imbalance tolerance [-]. */
+    double
+    imbalance_tolerance() const;
+
+  private:
+    /** The flagged cells that are FE now, as boxes, gathered from all ranks. */
+    std::vector<Box<dim>>
+    flagged_boxes(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const;
+
+    const Parameters::AdaptivePDZone<dim>     parameters;
+    std::unique_ptr<ConversionCriterion<dim>> criterion;
+    /** The particles the grown zone holds: within this distance of its PD part [m]. */
+    const double particle_reach;
+    unsigned int converted_cells   = 0;
+    double       conversion_energy = 0.;
+  };
+} // namespace PeriArlequin
+
+#endif

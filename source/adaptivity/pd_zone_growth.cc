@@ -1,0 +1,243 @@
+#include <periarlequin/adaptivity/pd_zone_growth.h>
+#include <periarlequin/coupling/interpolation_operator.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <unordered_map>
+#include <utility>
+
+namespace PeriArlequin
+{
+  namespace Parameters
+  {
+    template <int dim>
+    void
+    AdaptivePDZone<dim>::entries(ParameterEntries &entries)
+    {
+      entries.add("Conversion criterion",
+                  conversion_criterion,
+                  Patterns::Selection("none|" + ConversionCriterionRegistry<dim>::names()),
+                  "Which FE cells become PD during the run, by registered name (none: the "
+                  "PD zone is fixed):" +
+                    ConversionCriterionRegistry<dim>::documentation() +
+                    "\nNeeds a coupled case whose overlap is a band (Coupling/Overlap "
+                    "width). A criterion's own parameters are in the subsection of its "
+                    "name.");
+      entries.add("Check interval",
+                  check_interval,
+                  Patterns::Integer(1),
+                  "Ask the criterion every this many steps [-].");
+      entries.add("Load imbalance tolerance",
+                  imbalance_tolerance,
+                  Patterns::Double(0),
+                  "After a conversion on several ranks, repartition the cells (with the "
+                  "weights of the initial partition: particles times family size, plus a "
+                  "share per cell) when the most loaded rank carries more than (1 + this) "
+                  "times the mean load; particles, broken bonds and the FE field follow "
+                  "their cells. 0: after every conversion [-].");
+    }
+    template struct AdaptivePDZone<2>;
+    template struct AdaptivePDZone<3>;
+  } // namespace Parameters
+
+  template <int dim>
+  void
+  PDZoneGrowth<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptive PD zone");
+    ParameterEntries::declare_here<Parameters::AdaptivePDZone<dim>>(prm);
+    ConversionCriterionRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::unique_ptr<PDZoneGrowth<dim>>
+  PDZoneGrowth<dim>::create(ParameterHandler                    &prm,
+                            const Parameters::Coupling          &coupling,
+                            const Parameters::Geometry          &geometry,
+                            const Parameters::Peridynamics<dim> &pd_parameters)
+  {
+    prm.enter_subsection("Adaptive PD zone");
+    Parameters::AdaptivePDZone<dim> parameters;
+    ParameterEntries::parse_here(prm, parameters, "Adaptive PD zone/");
+    std::unique_ptr<PDZoneGrowth<dim>> growth;
+    const std::string                 &name = parameters.conversion_criterion;
+    if (name != "none")
+      {
+        if (!coupling.coupled() || !(coupling.overlap_width > 0))
+          throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
+                                  name,
+                                  "none, unless the zones are coupled (Coupling/Method) across "
+                                  "a band that can move with the PD region (Coupling/Overlap "
+                                  "width > 0)");
+        if (!geometry.mesh_file.empty())
+          throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
+                                  name,
+                                  "none with Geometry/Mesh file: converted cells join the PD "
+                                  "region as boxes, which only the cells of the box mesh are");
+        growth =
+          std::make_unique<PDZoneGrowth<dim>>(parameters,
+                                              ConversionCriterionRegistry<dim>::create(name, prm),
+                                              pd_parameters);
+      }
+    prm.leave_subsection();
+    return growth;
+  }
+
+  template <int dim>
+  PDZoneGrowth<dim>::PDZoneGrowth(const Parameters::AdaptivePDZone<dim>    &parameters,
+                                  std::unique_ptr<ConversionCriterion<dim>> criterion,
+                                  const Parameters::Peridynamics<dim>      &pd_parameters)
+    : parameters(parameters)
+    , criterion(std::move(criterion))
+    , particle_reach(pd_parameters.coupled_particle_reach())
+  {}
+
+  template <int dim>
+  void
+  PDZoneGrowth<dim>::initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone)
+  {
+    criterion->initialize(fe_zone, pd_zone);
+  }
+
+  template <int dim>
+  bool
+  PDZoneGrowth<dim>::due(const unsigned int step) const
+  {
+    return step % parameters.check_interval == 0;
+  }
+
+  template <int dim>
+  std::vector<Box<dim>>
+  PDZoneGrowth<dim>::flagged_boxes(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const
+  {
+    const auto       &triangulation = fe_zone.get_dof_handler().get_triangulation();
+    std::vector<bool> convert(triangulation.n_active_cells(), false);
+    criterion->mark_cells(fe_zone, pd_zone, convert);
+    // Each converted cell as its lower and upper corner.
+    std::vector<Point<dim>> local_corners;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && convert[cell->active_cell_index()] &&
+          !pd_zone.contains_cell(cell))
+        {
+          local_corners.push_back(cell->vertex(0));
+          local_corners.push_back(cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1));
+        }
+    std::vector<Box<dim>> boxes;
+    for (const auto &corners :
+         Utilities::MPI::all_gather(pd_zone.get_communicator(), local_corners))
+      for (unsigned int k = 0; k < corners.size(); k += 2)
+        boxes.push_back({corners[k], corners[k + 1]});
+    return boxes;
+  }
+
+  template <int dim>
+  unsigned int
+  PDZoneGrowth<dim>::grow(FEZone<dim>                 &fe_zone,
+                          PDZone<dim>                 &pd_zone,
+                          BlendingField<dim>          &blending,
+                          const std::function<void()> &rebuild_coupling)
+  {
+    const std::vector<Box<dim>> boxes = flagged_boxes(fe_zone, pd_zone);
+    if (boxes.empty())
+      return 0;
+    const MPI_Comm communicator = pd_zone.get_communicator();
+
+    const auto total_energy = [&]() {
+      return pd_zone.kinetic_energy() + fe_zone.kinetic_energy() + fe_zone.strain_energy() +
+             pd_zone.strain_energy();
+    };
+    const double         energy_before   = total_energy();
+    const Tensor<1, dim> momentum_before = fe_zone.linear_momentum() + pd_zone.linear_momentum();
+    // The mass each particle carries itself (a slave's is lumped on the FE nodes), by id.
+    std::unordered_map<types::particle_index, double> mass_before;
+    for (unsigned int i = 0; i < pd_zone.n_owned_particles(); ++i)
+      mass_before[pd_zone.particle_ids()[i]] = pd_zone.is_slave(i) ? 0. : pd_zone.particle_mass(i);
+    blending.add_to_pd_region(boxes);
+    pd_zone.set_region(blending.pd_region());
+    // The particles of the grown zone (the reach of the set-up); the new ones take the FE
+    // field, which still lives in the converted cells.
+    const std::vector<unsigned int> added = pd_zone.extend(
+      [&](const Point<dim> &x) { return blending.distance_to_pd_part(x) <= particle_reach; });
+    InterpolationOperator<dim> interpolation;
+    interpolation.reinit(fe_zone, pd_zone, added);
+    auto &fe_state = fe_zone.get_state();
+    auto &pd_state = pd_zone.get_state();
+    for (const auto &[fe_field, pd_field] :
+         {std::make_pair(&fe_state.displacement, pd_state.displacements()),
+          std::make_pair(&fe_state.velocity, pd_state.velocities()),
+          std::make_pair(&fe_state.acceleration, pd_state.accelerations())})
+      {
+        fe_field->update_ghost_values();
+        for (unsigned int r = 0; r < added.size(); ++r)
+          pd_field[added[r]] = interpolation.interpolate(*fe_field, r);
+      }
+    pd_zone.update_ghost_displacements();
+
+    fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); });
+    rebuild_coupling();
+
+    // The lumped FE masses and the particle masses integrate the blending weight with
+    // different quadratures, so the mass that left the FE nodes differs slightly from the
+    // mass the particles gained: the free particles that gained mass take the momentum
+    // difference, with one velocity increment.
+    std::vector<unsigned int> gained;
+    double                    gained_mass = 0;
+    const auto                ids         = pd_zone.particle_ids();
+    for (unsigned int i = 0; i < pd_zone.n_owned_particles(); ++i)
+      if (!pd_zone.is_slave(i) && !pd_zone.is_prescribed(i))
+        {
+          const auto   found = mass_before.find(ids[i]);
+          const double m     = pd_zone.particle_mass(i);
+          if (found == mass_before.end() || m > found->second)
+            {
+              gained.push_back(i);
+              gained_mass += m;
+            }
+        }
+    gained_mass = Utilities::MPI::sum(gained_mass, communicator);
+    if (gained_mass > 0)
+      {
+        const Tensor<1, dim> correction =
+          (momentum_before - fe_zone.linear_momentum() - pd_zone.linear_momentum()) / gained_mass;
+        for (const unsigned int i : gained)
+          pd_state.velocities()[i] += correction;
+      }
+
+    conversion_energy += total_energy() - energy_before;
+    converted_cells += boxes.size();
+    return boxes.size();
+  }
+
+  template <int dim>
+  unsigned int
+  PDZoneGrowth<dim>::n_converted_cells() const
+  {
+    return converted_cells;
+  }
+
+  template <int dim>
+  double
+  PDZoneGrowth<dim>::energy_change() const
+  {
+    return conversion_energy;
+  }
+
+  template <int dim>
+  void
+  PDZoneGrowth<dim>::restore_totals(const unsigned int cells, const double energy)
+  {
+    converted_cells   = cells;
+    conversion_energy = energy;
+  }
+
+  template <int dim>
+  double
+  PDZoneGrowth<dim>::imbalance_tolerance() const
+  {
+    return parameters.imbalance_tolerance;
+  }
+
+  template class PDZoneGrowth<2>;
+  template class PDZoneGrowth<3>;
+} // namespace PeriArlequin

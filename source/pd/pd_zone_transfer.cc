@@ -1,0 +1,154 @@
+#include <periarlequin/pd/pd_zone.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <boost/range/iterator_range.hpp>
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <array>
+#include <set>
+#include <unordered_map>
+
+namespace PeriArlequin
+{
+  namespace
+  {
+    /**
+     * What a particle takes along to its new owner in a repartition or a checkpoint: its
+     * kinematics, applied force, strain energy density (so the energies of the step that
+     * repartitioned are those of its force pass) and broken bonds.
+     */
+    template <int dim>
+    struct TransferredParticle
+    {
+      types::particle_index              id;
+      std::array<Tensor<1, dim>, 4>      kinematics;
+      double                             energy_density;
+      std::vector<types::particle_index> broken_partners;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &id &kinematics &energy_density &broken_partners;
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  std::vector<char>
+  PDZone<dim>::pack_particle_state(const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    std::vector<TransferredParticle<dim>> records;
+    const auto                            ids = ghosts.ids();
+    for (const auto &particle : particle_handler.particles_in_cell(
+           typename Triangulation<dim>::active_cell_iterator(cell)))
+      {
+        const unsigned int       i = ghosts.local_index(particle.get_id());
+        TransferredParticle<dim> record{particle.get_id(),
+                                        {{state.displacements()[i],
+                                          state.velocities()[i],
+                                          state.accelerations()[i],
+                                          applied_force[i]}},
+                                        energy_density[i],
+                                        {}};
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          if (bonds.state[n] == BondFamilies<dim>::broken)
+            record.broken_partners.push_back(ids[bonds.neighbor(i, n)]);
+        records.push_back(std::move(record));
+      }
+    return Utilities::pack(records, false);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::attach_particle_state()
+  {
+    state_handle = triangulation.register_data_attach(
+      [this](const typename Triangulation<dim>::cell_iterator &cell,
+             const typename Triangulation<dim>::CellStatus) { return pack_particle_state(cell); },
+      /*returns_variable_size_data=*/true);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::prepare_for_repartition()
+  {
+    particle_handler.prepare_for_coarsening_and_refinement();
+    attach_particle_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::prepare_for_serialization()
+  {
+    particle_handler.prepare_for_serialization();
+    attach_particle_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::unpack_after_repartition()
+  {
+    Assert(state_handle != numbers::invalid_unsigned_int,
+           ExcMessage("Call prepare_for_repartition() first."));
+    particle_handler.unpack_after_coarsening_and_refinement();
+    receive_particle_state();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::setup_from_checkpoint(const ProblemData<dim> &data, const double dt)
+  {
+    initialize_particle_handler(data, dt);
+    particle_handler.deserialize();
+    // The handles of a loaded triangulation are those of the save, in the order registered.
+    attach_particle_state();
+    receive_particle_state();
+    if (fracture)
+      fracture->initialize(parameters, *model, bonds);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::receive_particle_state()
+  {
+    std::unordered_map<types::particle_index, TransferredParticle<dim>> received;
+    triangulation.notify_ready_to_unpack(
+      state_handle,
+      [&received](const typename Triangulation<dim>::cell_iterator &,
+                  const typename Triangulation<dim>::CellStatus,
+                  const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        for (auto &record : Utilities::unpack<std::vector<TransferredParticle<dim>>>(data.begin(),
+                                                                                     data.end(),
+                                                                                     false))
+          received.emplace(record.id, std::move(record));
+      });
+    state_handle = numbers::invalid_unsigned_int;
+
+    build_particle_structures();
+    const auto                                   ids = ghosts.ids();
+    std::set<typename BondFamilies<dim>::IdPair> broken;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        const auto found = received.find(ids[i]);
+        AssertThrow(found != received.end(),
+                    ExcMessage("A particle arrived without its state in a repartition or "
+                               "from a checkpoint."));
+        const auto &[u, v, a, f] = found->second.kinematics;
+        state.displacements()[i] = u;
+        state.velocities()[i]    = v;
+        state.accelerations()[i] = a;
+        applied_force[i]         = f;
+        energy_density[i]        = found->second.energy_density;
+        for (const types::particle_index partner : found->second.broken_partners)
+          broken.emplace(std::minmax(ids[i], partner));
+      }
+    bonds.break_bonds(broken, ids);
+    update_ghost_displacements();
+  }
+
+  template class PDZone<2>;
+  template class PDZone<3>;
+} // namespace PeriArlequin

@@ -1,0 +1,121 @@
+#include <periarlequin/simulator.h>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the run (2: plane stress or plane strain, 3).");
+    Parameters::Geometry::declare_parameters(prm);
+    Parameters::Material::declare_parameters(prm);
+    Parameters::FiniteElements::declare_parameters(prm);
+    Parameters::Time::declare_parameters(prm);
+    Parameters::Output::declare_parameters(prm);
+    Parameters::Checkpoint::declare_parameters(prm);
+    Parameters::Peridynamics<dim>::declare_parameters(prm);
+    Parameters::Coupling::declare_parameters(prm);
+    ProblemData<dim>::declare_parameters(prm);
+    prm.enter_subsection("Postprocess");
+    prm.declare_entry("List of postprocessors",
+                      "energies, monitor region energies, constraint residuals",
+                      Patterns::MultipleSelection(PostprocessorRegistry<dim>::names()),
+                      "Postprocessors that add columns to the energy history (CSV) at every "
+                      "recorded step (Output/Energy interval), by registered name:" +
+                        PostprocessorRegistry<dim>::documentation() +
+                        "\nA postprocessor's own parameters are in the subsection of its "
+                        "name.");
+    PostprocessorRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Model",
+                      "none",
+                      Patterns::Selection("none|" + ContactRegistry<dim>::names()),
+                      "Contact of the FE boundary with an obstacle, by registered name (none: "
+                      "no contact):" +
+                        ContactRegistry<dim>::documentation() +
+                        "\nA model's own parameters are in the subsection of its name.");
+    ContactRegistry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+    PDZoneGrowth<dim>::declare_parameters(prm);
+  }
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm communicator)
+    : communicator(communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , triangulation(communicator)
+  {
+    AssertThrow(prm.get_integer("Dimension") == dim,
+                ExcMessage("The parameters declare Dimension = " + prm.get("Dimension") +
+                           " but are run by a " + std::to_string(dim) + "D simulator."));
+    geometry.parse_parameters(prm, dim);
+    material.parse_parameters(prm);
+    fe_parameters.parse_parameters(prm);
+    time_parameters.parse_parameters(prm);
+    output_parameters.parse_parameters(prm);
+    checkpoint_parameters.parse_parameters(prm);
+    physics_parameters = checkpointed_parameters(prm);
+    pd_parameters.parse_parameters(prm);
+    coupling_parameters.parse_parameters(prm);
+    problem_data.parse_parameters(prm);
+    if (!pd_parameters.region.empty())
+      {
+        prm.enter_subsection("Peridynamics");
+        pd_material = PDMaterialRegistry<dim>::create(pd_parameters.material_model, prm);
+        if (pd_parameters.fracture)
+          fracture_criterion =
+            FractureCriterionRegistry<dim>::create(pd_parameters.fracture_criterion, prm);
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Contact");
+    contact_model = prm.get("Model");
+    if (contact_model != "none")
+      contact = ContactRegistry<dim>::create(contact_model, prm);
+    prm.leave_subsection();
+    zone_growth = PDZoneGrowth<dim>::create(prm, coupling_parameters, geometry, pd_parameters);
+    prm.enter_subsection("Postprocess");
+    for (const auto &name : Utilities::split_string_list(prm.get("List of postprocessors")))
+      postprocessors.push_back(PostprocessorRegistry<dim>::create(name, prm));
+    prm.leave_subsection();
+    if (coupling_parameters.coupled())
+      {
+        // Quadratic shape functions integrate to zero against alpha next to the alpha = 0
+        // edge, so the blended lumped masses of eq. 50 vanish there.
+        if (fe_parameters.degree != 1)
+          throw_invalid_parameter("Finite elements/Polynomial degree",
+                                  fe_parameters.degree,
+                                  "1 when the zones are coupled (Coupling/Method = " +
+                                    coupling_parameters.method +
+                                    "): the alpha-weighted lumped masses of higher degrees "
+                                    "vanish at the edge of the overlap");
+        prm.enter_subsection("Coupling");
+        coupling =
+          CouplingRegistry<dim>::create(coupling_parameters.method, prm, coupling_parameters);
+        prm.leave_subsection();
+        blending = std::make_unique<BlendingField<dim>>(coupling_parameters,
+                                                        coupling->blending_profile(),
+                                                        pd_parameters.region);
+      }
+    monitor_region =
+      output_parameters.monitor_region.empty() ?
+        pd_parameters.region :
+        Region<dim>::parse(output_parameters.monitor_region, "Output/Monitor region");
+    if (!output_parameters.sample_line.empty())
+      {
+        const auto [a, b] = parse_segment<dim>(output_parameters.sample_line, "Output/Sample line");
+        line_samples      = std::make_unique<LineSamples<dim>>(a,
+                                                          b,
+                                                          output_parameters,
+                                                          pd_parameters.lattice_spacing,
+                                                          communicator);
+      }
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace PeriArlequin

@@ -1,0 +1,307 @@
+#include <periarlequin/simulator.h>
+
+#include <cstdint>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    if (!setup_done)
+      setup();
+    prepare_output();
+    const auto due = [&](const unsigned int interval) {
+      return interval > 0 && (get_step_number() % interval == 0 || get_step_number() == n_steps);
+    };
+
+    if (resumed)
+      restore_outputs();
+    else
+      {
+        if (due(output_parameters.energy_interval))
+          record_statistics();
+        if (due(output_parameters.output_interval))
+          write_output();
+      }
+
+    wall_clock.restart();
+    last_checkpoint_wall_time = 0;
+    first_step                = get_step_number();
+    bool checkpointed         = false;
+    while (get_step_number() < n_steps)
+      {
+        advance();
+        if (due(output_parameters.energy_interval))
+          record_statistics();
+        if (due(output_parameters.output_interval))
+          write_output();
+        checkpointed = checkpoint_due();
+        if (checkpointed)
+          write_checkpoint();
+        report_progress(get_step_number() == n_steps);
+      }
+    if (checkpoint_parameters.at_end && !checkpointed)
+      write_checkpoint();
+    const double loop_time = wall_clock.wall_time();
+    check_finite(kinetic_energy());
+    const unsigned int steps_run = n_steps - first_step;
+    pcout << "Time loop: " << steps_run << " steps in " << loop_time << " s";
+    if (fe_zone)
+      pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * steps_run / loop_time
+            << " FE DoF-steps/s";
+    if (pd_zone)
+      pcout << ", " << static_cast<double>(pd_zone->n_global_bonds()) * steps_run / loop_time
+            << " PD bond-updates/s";
+    pcout << std::endl;
+    if (output_parameters.print_timing)
+      timer.print_wall_time_statistics(communicator);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::advance()
+  {
+    integrator->step();
+    if (zone_growth && zone_growth->due(get_step_number()))
+      grow_pd_zone();
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::grow_pd_zone()
+  {
+    TimerOutput::Scope scope(timer, "PD zone growth");
+    const unsigned int n_cells = zone_growth->grow(*fe_zone, *pd_zone, *blending, [this]() {
+      rebuild_coupling();
+      integrator->initialize();
+    });
+    if (n_cells == 0)
+      return 0;
+    if (output_parameters.progress_interval > 0)
+      pcout << "  step " << get_step_number() << ": " << n_cells << " FE cells became PD; now "
+            << pd_zone->n_global_particles() << " particles, " << fe_zone->n_dofs() << " FE DoFs"
+            << std::endl;
+    rebalance(zone_growth->imbalance_tolerance());
+    return n_cells;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::rebuild_coupling()
+  {
+    if (contact)
+      contact->initialize(*fe_zone);
+    if (coupling)
+      coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::load_imbalance() const
+  {
+    AssertThrow(pd_zone, ExcMessage("The load of a rank is measured with PD cell weights."));
+    std::uint64_t local = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        local += pd_zone->cell_weight(cell);
+    const std::uint64_t largest = Utilities::MPI::max(local, communicator);
+    const std::uint64_t total   = Utilities::MPI::sum(local, communicator);
+    return static_cast<double>(largest) * Utilities::MPI::n_mpi_processes(communicator) /
+             static_cast<double>(total) -
+           1.;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::rebalance(const double tolerance)
+  {
+    AssertThrow(pd_zone, ExcMessage("Simulator::rebalance() needs a PD zone."));
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1 || load_imbalance() <= tolerance)
+      return false;
+    repartition_zones();
+    ++repartitions;
+    return true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::repartition_zones()
+  {
+    TimerOutput::Scope scope(timer, "repartition");
+    if (fe_zone)
+      fe_zone->prepare_for_repartition();
+    pd_zone->prepare_for_repartition();
+    triangulation.repartition();
+    if (fe_zone)
+      fe_zone->unpack_after_repartition();
+    pd_zone->unpack_after_repartition();
+    // The state moved unchanged (with the accelerations the coupling corrected), so the
+    // integrator is not initialized again.
+    rebuild_coupling();
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::n_repartitions() const
+  {
+    return repartitions;
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::n_converted_cells() const
+  {
+    return zone_growth ? zone_growth->n_converted_cells() : 0;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::conversion_energy_change() const
+  {
+    return zone_growth ? zone_growth->energy_change() : 0.;
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::get_step_number() const
+  {
+    return integrator->get_time().get_step_number();
+  }
+
+  template <int dim>
+  FEZone<dim> &
+  Simulator<dim>::get_fe_zone()
+  {
+    return *fe_zone;
+  }
+
+  template <int dim>
+  const FEZone<dim> &
+  Simulator<dim>::get_fe_zone() const
+  {
+    return *fe_zone;
+  }
+
+  template <int dim>
+  Coupling<dim> *
+  Simulator<dim>::get_coupling()
+  {
+    return coupling.get();
+  }
+
+  template <int dim>
+  const Coupling<dim> *
+  Simulator<dim>::get_coupling() const
+  {
+    return coupling.get();
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::has_fe_zone() const
+  {
+    return fe_zone != nullptr;
+  }
+
+  template <int dim>
+  const PDZone<dim> *
+  Simulator<dim>::get_pd_zone() const
+  {
+    return pd_zone.get();
+  }
+
+  template <int dim>
+  const Contact<dim> *
+  Simulator<dim>::get_contact() const
+  {
+    return contact.get();
+  }
+
+  template <int dim>
+  const Region<dim> &
+  Simulator<dim>::get_monitor_region() const
+  {
+    return monitor_region;
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::get_n_steps() const
+  {
+    return n_steps;
+  }
+
+  template <int dim>
+  const Parameters::Output &
+  Simulator<dim>::get_output_parameters() const
+  {
+    return output_parameters;
+  }
+
+  template <int dim>
+  PDZone<dim> *
+  Simulator<dim>::get_pd_zone()
+  {
+    return pd_zone.get();
+  }
+
+  template <int dim>
+  const ProblemData<dim> &
+  Simulator<dim>::get_problem_data() const
+  {
+    return problem_data;
+  }
+
+  template <int dim>
+  const EnergyHistory &
+  Simulator<dim>::get_energy_history() const
+  {
+    return *energy_history;
+  }
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_displacement() const
+  {
+    return fe_zone->get_state().displacement;
+  }
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_velocity() const
+  {
+    return fe_zone->get_state().velocity;
+  }
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::get_acceleration() const
+  {
+    return fe_zone->get_state().acceleration;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_time() const
+  {
+    return integrator->get_time().get_current_time();
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_time_step() const
+  {
+    return time_parameters.time_step;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_stable_time_step() const
+  {
+    return stable_time_step;
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace PeriArlequin
