@@ -1,4 +1,5 @@
 #include <periarlequin/simulator.h>
+#include <periarlequin/simulator/checkpoint_record.h>
 
 namespace PeriArlequin
 {

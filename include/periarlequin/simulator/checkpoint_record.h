@@ -1,0 +1,55 @@
+#ifndef periarlequin_simulator_checkpoint_record_h
+#define periarlequin_simulator_checkpoint_record_h
+
+#include <periarlequin/simulator.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PeriArlequin
+{
+  /**
+   * What a checkpoint holds besides the mesh and its cell data (source/simulator/
+   * checkpoint.cc writes and reads it): the parameters it must agree with, the clock, the
+   * grown PD region, the counters, the works, the history and the output records.
+   */
+  template <int dim>
+  struct Simulator<dim>::CheckpointRecord
+  {
+    std::string              format    = "PeriArlequin checkpoint 1";
+    unsigned int             dimension = dim;
+    std::vector<std::string> parameters;
+    unsigned int             n_ranks = 0;
+    unsigned int             step    = 0;
+    /** The pure PD region (grown by an adaptive zone). */
+    Region<dim>  pd_region;
+    unsigned int converted_cells = 0, repartitions = 0;
+    double       conversion_energy = 0, fe_work = 0;
+    /** Each rank's share of the PD zone's external work [J]. */
+    std::vector<double>                         pd_work;
+    std::vector<std::string>                    history_names;
+    std::vector<std::vector<double>>            history_rows;
+    std::vector<std::pair<double, std::string>> fe_records, pd_records;
+    std::vector<std::string>                    postprocessor_states;
+    /** The other files of the checkpoint (the mesh and its cell data) and their checksums. */
+    std::vector<std::pair<std::string, std::uint64_t>> files;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &format &dimension &parameters &n_ranks &step &pd_region &converted_cells
+        &repartitions &conversion_energy &fe_work &pd_work &history_names &history_rows &fe_records
+          &pd_records &postprocessor_states &files;
+    }
+  };
+
+} // namespace PeriArlequin
+
+#endif
