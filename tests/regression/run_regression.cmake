@@ -8,7 +8,8 @@
 ## the test's entries (@SOURCE_DIR@ replaced by the source tree) and the output entries below;
 ## runs the application (-DLAUNCHER for several ranks); and compares regression_energy.csv
 ## with <name>.csv: every number within the relative or the absolute tolerance (numdiff).
-## PERIARLEQUIN_UPDATE_REGRESSION=1 in the environment writes the reference instead.
+## PERIARLEQUIN_UPDATE_REGRESSION=1 in the environment writes the reference instead (-DRANKS
+## names the rank count, for a reference of its own).
 file(READ ${PRM} _text)
 string(REGEX MATCH "# regression: ([^\n]*)" _ ${_text})
 set(_shipped "${CMAKE_MATCH_1}")
@@ -27,7 +28,7 @@ subsection Output
   set Output interval = 0
   set Energy interval = 1
   set Progress interval = 0
-  set Print timing = false
+  set Print timing summary = false
 end
 ")
 file(REMOVE regression_energy.csv)
@@ -38,7 +39,12 @@ if(NOT "${_result}" STREQUAL "0")
 endif()
 get_filename_component(_name ${PRM} NAME_WE)
 get_filename_component(_dir ${PRM} DIRECTORY)
+# Columns that depend on the rank count (load imbalance, repartitions) need a reference of
+# their own: <name>.mpirun=N.csv where it exists.
 set(_reference ${_dir}/${_name}.csv)
+if(RANKS AND EXISTS ${_dir}/${_name}.mpirun=${RANKS}.csv)
+  set(_reference ${_dir}/${_name}.mpirun=${RANKS}.csv)
+endif()
 if("$ENV{PERIARLEQUIN_UPDATE_REGRESSION}" STREQUAL "1")
   file(COPY_FILE regression_energy.csv ${_reference})
   message(STATUS "Wrote ${_reference}")
