@@ -304,7 +304,7 @@ namespace PeriArlequin
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<EnergyHistory>                   energy_history;
     std::unique_ptr<PredictorCorrector<dim>>         integrator;
-    /** The zones the case has, PD before FE (the order the integrator needs). */
+    /** The zones the case has, PD before FE (the order energies are summed in). */
     std::vector<IntegratedZone *> zones;
 
     unsigned int n_steps          = 0;

@@ -78,27 +78,33 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  DamageProximityCriterion<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Distance",
+                distance,
+                Patterns::Double(0),
+                "FE cells closer than this to a damaged particle become PD. It must exceed two "
+                "bond reaches, 2 (delta + dx/2), plus the distance a crack runs between two "
+                "checks (Adaptive PD zone/Check interval) [m].");
+    entries.add("Damage threshold",
+                damage_threshold,
+                Patterns::Double(0, 1),
+                "A particle counts as damaged when its damage (broken share of its bond "
+                "volume) exceeds this [-].");
+  }
+
+  template <int dim>
+  void
   DamageProximityCriterion<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Distance",
-                      "0",
-                      Patterns::Double(0),
-                      "FE cells closer than this to a damaged particle become PD. It must "
-                      "exceed two bond reaches, 2 (delta + dx/2), plus the distance a crack "
-                      "runs between two checks (Adaptive PD zone/Check interval) [m].");
-    prm.declare_entry("Damage threshold",
-                      "0",
-                      Patterns::Double(0, 1),
-                      "A particle counts as damaged when its damage (broken share of its "
-                      "bond volume) exceeds this [-].");
+    ParameterEntries::declare_here<DamageProximityCriterion<dim>>(prm);
   }
 
   template <int dim>
   void
   DamageProximityCriterion<dim>::parse_parameters(ParameterHandler &prm)
   {
-    distance         = prm.get_double("Distance");
-    damage_threshold = prm.get_double("Damage threshold");
+    ParameterEntries::parse_here(prm, *this, "Adaptive PD zone/damage distance/");
   }
 
   template <int dim>
@@ -140,32 +146,37 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  StrainCriterion<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Strain",
+                strain_threshold,
+                Patterns::Double(0),
+                "FE cells whose largest principal strain at the centre reaches this become "
+                "PD; 0: use Fraction of critical stretch [-].");
+    entries.add("Fraction of critical stretch",
+                stretch_fraction,
+                Patterns::Double(0),
+                "With Strain = 0, the threshold is this fraction of the critical stretch of "
+                "Peridynamics/Fracture criterion [-].");
+    entries.add("Buffer",
+                buffer,
+                Patterns::Double(0),
+                "FE cells within this distance of a cell over the threshold become PD with it "
+                "[m].");
+  }
+
+  template <int dim>
+  void
   StrainCriterion<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Strain",
-                      "0",
-                      Patterns::Double(0),
-                      "FE cells whose largest principal strain at the centre reaches this "
-                      "become PD; 0: use Fraction of critical stretch [-].");
-    prm.declare_entry("Fraction of critical stretch",
-                      "0.5",
-                      Patterns::Double(0),
-                      "With Strain = 0, the threshold is this fraction of the critical "
-                      "stretch of Peridynamics/Fracture criterion [-].");
-    prm.declare_entry("Buffer",
-                      "0",
-                      Patterns::Double(0),
-                      "FE cells within this distance of a cell over the threshold become PD "
-                      "with it [m].");
+    ParameterEntries::declare_here<StrainCriterion<dim>>(prm);
   }
 
   template <int dim>
   void
   StrainCriterion<dim>::parse_parameters(ParameterHandler &prm)
   {
-    strain_threshold = prm.get_double("Strain");
-    stretch_fraction = prm.get_double("Fraction of critical stretch");
-    buffer           = prm.get_double("Buffer");
+    ParameterEntries::parse_here(prm, *this, "Adaptive PD zone/strain/");
   }
 
   template <int dim>

@@ -9,34 +9,36 @@ namespace PeriArlequin
 {
   template <int dim>
   void
+  CrackTipField<dim>::Input::entries(ParameterEntries &entries)
+  {
+    entries.add("Boundary ids",
+                boundary_ids,
+                Patterns::List(Patterns::Integer(0, 2 * dim - 1)),
+                "Boundary ids whose displacement is the crack-tip field of eq. 82 (their own "
+                "Type must be free); empty: none.");
+    entries.add("Tip", tip, Patterns::List(Patterns::Double(), 2, 2), "Crack tip x, y [m].");
+    entries.add("Crack direction",
+                direction,
+                Patterns::Double(-360, 360),
+                "Direction in which the crack points, from its faces to the tip, "
+                "counter-clockwise from x [degrees]: 0 is a crack along the negative x axis of "
+                "the tip.");
+    entries.add("Stress intensity factor",
+                stress_intensity,
+                Patterns::Anything(),
+                "K_eff(t) = sqrt(K_I^2 + K_II^2) as a muparser expression of the time t [Pa "
+                "m^1/2], e.g. 1e9*t for the paper's ramp of 1e3 MPa m^1/2/s.");
+    entries.add("Phase angle",
+                phase_angle,
+                Patterns::Double(-90, 90),
+                "psi with K_I = K_eff cos psi, K_II = K_eff sin psi [degrees].");
+  }
+
+  template <int dim>
+  void
   CrackTipField<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Crack tip field");
-    prm.declare_entry("Boundary ids",
-                      "",
-                      Patterns::List(Patterns::Integer(0, 2 * dim - 1)),
-                      "Boundary ids whose displacement is the crack-tip field of eq. 82 (their "
-                      "own Type must be free); empty: none.");
-    prm.declare_entry("Tip",
-                      "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 2),
-                      "Crack tip x, y [m].");
-    prm.declare_entry("Crack direction",
-                      "0",
-                      Patterns::Double(-360, 360),
-                      "Direction in which the crack points, from its faces to the tip, "
-                      "counter-clockwise from x [degrees]: 0 is a crack along the negative x "
-                      "axis of the tip.");
-    prm.declare_entry("Stress intensity factor",
-                      "0",
-                      Patterns::Anything(),
-                      "K_eff(t) = sqrt(K_I^2 + K_II^2) as a muparser expression of the time t "
-                      "[Pa m^1/2], e.g. 1e9*t for the paper's ramp of 1e3 MPa m^1/2/s.");
-    prm.declare_entry("Phase angle",
-                      "0",
-                      Patterns::Double(-90, 90),
-                      "psi with K_I = K_eff cos psi, K_II = K_eff sin psi [degrees].");
-    prm.leave_subsection();
+    ParameterEntries::declare<Input>(prm, "Crack tip field");
   }
 
   template <int dim>
@@ -45,18 +47,13 @@ namespace PeriArlequin
                                     std::vector<unsigned int>  &boundary_ids)
     : Function<dim>(dim)
   {
-    prm.enter_subsection("Crack tip field");
-    boundary_ids.clear();
-    for (const std::string &id : Utilities::split_string_list(prm.get("Boundary ids")))
-      boundary_ids.push_back(Utilities::string_to_int(id));
-    const auto coordinates =
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Tip")));
-    tip                          = Point<2>(coordinates[0], coordinates[1]);
-    direction                    = prm.get_double("Crack direction") * numbers::PI / 180.;
-    phase_angle                  = prm.get_double("Phase angle") * numbers::PI / 180.;
-    const std::string expression = prm.get("Stress intensity factor");
-    prm.leave_subsection();
-    initialize(expression, material);
+    Input input;
+    ParameterEntries::parse(prm, "Crack tip field", input, "Boundary conditions/");
+    boundary_ids = input.boundary_ids;
+    tip          = Point<2>(input.tip[0], input.tip[1]);
+    direction    = input.direction * numbers::PI / 180.;
+    phase_angle  = input.phase_angle * numbers::PI / 180.;
+    initialize(input.stress_intensity, material);
   }
 
   template <int dim>

@@ -13,24 +13,30 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  ArlequinCoupling<dim>::MultiplierGrid::entries(ParameterEntries &entries)
+  {
+    entries.add("Multiplier spacing",
+                spacing,
+                Patterns::Double(1),
+                "The lambda-mesh, in FE cells h (the largest cell extent around the overlap): "
+                "1 puts a multiplier on every FE node of the overlap (H = N); k > 1 on every "
+                "node of a Cartesian grid of Q1 hats of spacing k h laid from the lower corner "
+                "of the overlap. At k = 2 the constraint leaves the waves of 2 to 4 FE cells, "
+                "which the FE mesh cannot propagate, to the fine-scale damping instead of "
+                "reflecting them (doc/wave_study.md) [FE cells].");
+    entries.add("Multiplier grid offset",
+                offset,
+                Patterns::Double(0, 0.999),
+                "With a spacing k > 1: the grid's nodes start this fraction of the spacing "
+                "before the lower corner of the overlap's PD nodes. The reflection near the "
+                "cut-off of the lambda-mesh depends on it (doc/wave_study.md) [-].");
+  }
+
+  template <int dim>
+  void
   ArlequinCoupling<dim>::declare_weak_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Multiplier spacing",
-                      "2",
-                      Patterns::Double(1),
-                      "The lambda-mesh, in FE cells h (the largest cell extent around the "
-                      "overlap): 1 puts a multiplier on every FE node of the overlap (H = N); "
-                      "k > 1 on every node of a Cartesian grid of Q1 hats of spacing k h laid "
-                      "from the lower corner of the overlap. At k = 2 the constraint leaves the "
-                      "waves of 2 to 4 FE cells, which the FE mesh cannot propagate, to the "
-                      "fine-scale damping instead of reflecting them (doc/wave_study.md) "
-                      "[FE cells].");
-    prm.declare_entry("Multiplier grid offset",
-                      "0",
-                      Patterns::Double(0, 0.999),
-                      "With a spacing k > 1: the grid's nodes start this fraction of the spacing "
-                      "before the lower corner of the overlap's PD nodes. The reflection near "
-                      "the cut-off of the lambda-mesh depends on it (doc/wave_study.md) [-].");
+    ParameterEntries::declare_here<MultiplierGrid>(prm);
   }
 
   template <int dim>
@@ -38,10 +44,7 @@ namespace PeriArlequin
   ArlequinCoupling<dim>::parse_parameters(ParameterHandler &prm)
   {
     if (mesh == MultiplierMesh::weak)
-      {
-        multiplier_spacing     = prm.get_double("Multiplier spacing");
-        multiplier_grid_offset = prm.get_double("Multiplier grid offset");
-      }
+      ParameterEntries::parse_here(prm, multiplier_grid, "Coupling/weak/");
   }
 
   template <int dim>
@@ -98,7 +101,7 @@ namespace PeriArlequin
 
     if (mesh == MultiplierMesh::strict)
       space = std::make_unique<StrictMultiplierSpace<dim>>(overlap, communicator);
-    else if (multiplier_spacing == 1)
+    else if (multiplier_grid.spacing == 1)
       space = std::make_unique<WeakMultiplierSpace<dim>>(overlap, fe);
     else
       {
@@ -108,8 +111,8 @@ namespace PeriArlequin
         space = std::make_unique<GridMultiplierSpace<dim>>(overlap,
                                                            fe,
                                                            positions,
-                                                           multiplier_spacing,
-                                                           multiplier_grid_offset);
+                                                           multiplier_grid.spacing,
+                                                           multiplier_grid.offset);
       }
     space->initialize_vector(lambda);
     space->initialize_vector(rhs);
@@ -131,7 +134,7 @@ namespace PeriArlequin
                                                         overlap,
                                                         dt);
 
-    connect_fe_forces(parameters, blending, fe, slaves);
+    set_fe_force_weights(parameters, blending, fe);
   }
 
   template <int dim>
@@ -152,6 +155,13 @@ namespace PeriArlequin
   ArlequinCoupling<dim>::set_slave_displacements()
   {
     slaves.follow_displacements();
+  }
+
+  template <int dim>
+  void
+  ArlequinCoupling<dim>::add_interface_forces(const double time)
+  {
+    add_slave_forces(parameters, slaves, time, *fe_zone);
   }
 
   template <int dim>

@@ -39,7 +39,7 @@ namespace PeriArlequin
                            parameters.overlap_text +
                            "'; allowed: an overlap whose halves hold FE nodes (PD side) "
                            "and PD particles (FE side) for the bad coupling."));
-    connect_fe_forces(parameters, blending, fe, slaves);
+    set_fe_force_weights(parameters, blending, fe);
   }
 
   template <int dim>
@@ -56,6 +56,13 @@ namespace PeriArlequin
         displacement.local_element(slave.dof) = value;
       }
     slaves.follow_displacements();
+  }
+
+  template <int dim>
+  void
+  MasterSlaveCoupling<dim>::add_interface_forces(const double time)
+  {
+    add_slave_forces(parameters, slaves, time, *fe_zone);
   }
 
   template <int dim>

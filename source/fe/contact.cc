@@ -32,30 +32,37 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  RigidWallContact<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Point",
+                point_text,
+                Patterns::List(Patterns::Double(), dim, dim),
+                "A point of the wall plane [m].");
+    entries.add("Normal",
+                normal_text,
+                Patterns::List(Patterns::Double(), dim, dim),
+                "The wall's normal, pointing to the side where the body is (not necessarily "
+                "of unit length) [-].");
+    entries.add("Boundary ids",
+                boundary_id_list,
+                Patterns::List(Patterns::Integer(0), 0),
+                "The boundaries whose nodes may touch the wall; empty: all.");
+  }
+
+  template <int dim>
+  void
   RigidWallContact<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Point",
-                      dim == 2 ? "0, 0" : "0, 0, 0",
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "A point of the wall plane [m].");
-    prm.declare_entry("Normal",
-                      dim == 2 ? "-1, 0" : "-1, 0, 0",
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "The wall's normal, pointing to the side where the body is (not "
-                      "necessarily of unit length) [-].");
-    prm.declare_entry("Boundary ids",
-                      "",
-                      Patterns::List(Patterns::Integer(0), 0),
-                      "The boundaries whose nodes may touch the wall; empty: all.");
+    ParameterEntries::declare_here<RigidWallContact<dim>>(prm);
   }
 
   template <int dim>
   void
   RigidWallContact<dim>::parse_parameters(ParameterHandler &prm)
   {
-    point_text       = prm.get("Point");
+    ParameterEntries::parse_here(prm, *this, "Contact/rigid wall/");
     const auto point = Utilities::string_to_double(Utilities::split_string_list(point_text));
-    const auto n     = Utilities::string_to_double(Utilities::split_string_list(prm.get("Normal")));
+    const auto n     = Utilities::string_to_double(Utilities::split_string_list(normal_text));
     for (unsigned int d = 0; d < dim; ++d)
       {
         wall_point[d] = point[d];
@@ -63,13 +70,10 @@ namespace PeriArlequin
       }
     if (!(normal.norm() > 0))
       throw_invalid_parameter("Contact/rigid wall/Normal",
-                              prm.get("Normal"),
+                              normal_text,
                               "a non-zero vector pointing to the body's side of the wall");
     normal /= normal.norm();
-    boundary_ids.clear();
-    for (const int id :
-         Utilities::string_to_int(Utilities::split_string_list(prm.get("Boundary ids"))))
-      boundary_ids.insert(id);
+    boundary_ids = std::set<unsigned int>(boundary_id_list.begin(), boundary_id_list.end());
   }
 
   namespace
@@ -239,35 +243,41 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  ElasticTargetContact<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Striker boundary ids",
+                striker_id_list,
+                Patterns::List(Patterns::Integer(0), 0),
+                "The boundaries of the moving body whose vertices may touch the target (a "
+                "mesh file's physical tags; a box's faces are 0 to 2 dim - 1).");
+    entries.add("Target boundary ids",
+                target_id_list,
+                Patterns::List(Patterns::Integer(0), 0),
+                "The boundaries of the target whose faces the striker may touch; they must "
+                "belong to another body than the striker's (no shared vertex).");
+  }
+
+  template <int dim>
+  void
   ElasticTargetContact<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Striker boundary ids",
-                      "",
-                      Patterns::List(Patterns::Integer(0), 0),
-                      "The boundaries of the moving body whose vertices may touch the target "
-                      "(a mesh file's physical tags; a box's faces are 0 to 2 dim - 1).");
-    prm.declare_entry("Target boundary ids",
-                      "",
-                      Patterns::List(Patterns::Integer(0), 0),
-                      "The boundaries of the target whose faces the striker may touch; they "
-                      "must belong to another body than the striker's (no shared vertex).");
+    ParameterEntries::declare_here<ElasticTargetContact<dim>>(prm);
   }
 
   template <int dim>
   void
   ElasticTargetContact<dim>::parse_parameters(ParameterHandler &prm)
   {
-    const auto read = [&](const std::string &name, std::set<unsigned int> &ids) {
-      ids.clear();
-      for (const int id : Utilities::string_to_int(Utilities::split_string_list(prm.get(name))))
-        ids.insert(id);
-      if (ids.empty())
+    ParameterEntries::parse_here(prm, *this, "Contact/elastic target/");
+    const auto as_set = [](const std::string &name, const std::vector<unsigned int> &list) {
+      if (list.empty())
         throw_invalid_parameter("Contact/elastic target/" + name,
                                 "",
                                 "a non-empty list of boundary ids");
+      return std::set<unsigned int>(list.begin(), list.end());
     };
-    read("Striker boundary ids", striker_ids);
-    read("Target boundary ids", target_ids);
+    striker_ids = as_set("Striker boundary ids", striker_id_list);
+    target_ids  = as_set("Target boundary ids", target_id_list);
     for (const unsigned int id : striker_ids)
       if (target_ids.count(id))
         throw_invalid_parameter("Contact/elastic target/Target boundary ids",

@@ -108,19 +108,34 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEZone<dim>::compute_accelerations(const double t)
+  FEZone<dim>::compute_forces(const double t)
   {
     compute_internal_force(state.displacement, internal_force);
     if (!nodal_force_weights.empty())
       for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
         internal_force.local_element(i) *= nodal_force_weights[i];
     interface_force = 0.;
-    if (add_interface_force)
-      add_interface_force(interface_force);
     compute_external_force(*problem_data, t, applied_force);
-    if (add_additional_load)
-      add_additional_load(t, applied_force);
+  }
 
+  template <int dim>
+  typename FEZone<dim>::VectorType &
+  FEZone<dim>::interface_forces()
+  {
+    return interface_force;
+  }
+
+  template <int dim>
+  typename FEZone<dim>::VectorType &
+  FEZone<dim>::applied_forces()
+  {
+    return applied_force;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::compute_accelerations(const double)
+  {
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       state.acceleration.local_element(i) =
         (applied_force.local_element(i) - internal_force.local_element(i) +
@@ -230,24 +245,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEZone<dim>::set_interface_force(const std::function<void(VectorType &)> &add_force)
-  {
-    add_interface_force = add_force;
-  }
-
-  template <int dim>
-  void
   FEZone<dim>::set_contact(Contact<dim> *contact_model)
   {
     contact     = contact_model;
     tracks_work = tracks_work || contact != nullptr;
-  }
-
-  template <int dim>
-  void
-  FEZone<dim>::set_additional_load(const std::function<void(double, VectorType &)> &add_load)
-  {
-    add_additional_load = add_load;
   }
 
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
@@ -268,11 +269,10 @@ namespace PeriArlequin
   template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()     \
     const;                                                                                       \
   template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);               \
-  template void FEZone<dim>::set_interface_force(                                                \
-    const std::function<void(FEZone<dim>::VectorType &)> &);                                     \
   template void FEZone<dim>::set_contact(Contact<dim> *);                                        \
-  template void FEZone<dim>::set_additional_load(                                                \
-    const std::function<void(double, FEZone<dim>::VectorType &)> &);
+  template void FEZone<dim>::compute_forces(const double);                                       \
+  template FEZone<dim>::VectorType &FEZone<dim>::interface_forces();                             \
+  template FEZone<dim>::VectorType &FEZone<dim>::applied_forces();
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

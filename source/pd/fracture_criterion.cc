@@ -15,6 +15,22 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  double
+  FractureCriterion<dim>::critical_stretch() const
+  {
+    return 0;
+  }
+
+  template <int dim>
+  void
+  FractureCriterion<dim>::break_bonds(BreakableBonds<dim> &, ArrayView<const double>) const
+  {
+    AssertThrow(false,
+                ExcMessage("A fracture criterion breaks bonds in break_bonds() unless it "
+                           "returns a critical_stretch() > 0."));
+  }
+
+  template <int dim>
   void
   CriticalStretchCriterion<dim>::initialize(const Parameters::Peridynamics<dim> &parameters,
                                             const PDMaterialModel<dim>          &model,
@@ -28,29 +44,6 @@ namespace PeriArlequin
     stretch = parameters.critical_stretch > 0 ?
                 parameters.critical_stretch :
                 model.critical_stretch(parameters.energy_release_rate, parameters.horizon());
-  }
-
-  template <int dim>
-  bool
-  CriticalStretchCriterion<dim>::break_bonds(BondFamilies<dim>              &bonds,
-                                             ArrayView<const Tensor<1, dim>> u,
-                                             ArrayView<const double>) const
-  {
-    bool broke = false;
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          if (bonds.state[n] != BondFamilies<dim>::intact)
-            continue;
-          const auto  &bond = bonds.stencil[bonds.stencil_index[n]];
-          const double e = BondFamilies<dim>::extension(bond, u[bonds.neighbor(i, n)] - u[i]).first;
-          if (e > stretch * bond.length)
-            {
-              bonds.state[n] = BondFamilies<dim>::broken;
-              broke          = true;
-            }
-        }
-    return broke;
   }
 
   template <int dim>
@@ -85,24 +78,15 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  bool
-  CriticalBondEnergyCriterion<dim>::break_bonds(BondFamilies<dim>              &bonds,
-                                                ArrayView<const Tensor<1, dim>> u,
-                                                ArrayView<const double>         scalars) const
+  void
+  CriticalBondEnergyCriterion<dim>::break_bonds(BreakableBonds<dim>    &bonds,
+                                                ArrayView<const double> scalars) const
   {
-    model->compute_pair_energies(bonds, u, scalars, pair_energy);
-    bool broke = false;
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        if (bonds.state[n] == BondFamilies<dim>::intact && pair_energy[n] >= critical_energy_ &&
-            BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
-                                         u[bonds.neighbor(i, n)] - u[i])
-                .first > 0)
-          {
-            bonds.state[n] = BondFamilies<dim>::broken;
-            broke          = true;
-          }
-    return broke;
+    model->compute_pair_energies(bonds.families(), bonds.displacements(), scalars, pair_energy);
+    bonds.for_each_intact([&](const typename BreakableBonds<dim>::Bond &bond) {
+      if (pair_energy[bond.index] >= critical_energy_ && bond.extension > 0)
+        bonds.break_bond(bond);
+    });
   }
 
   template <int dim>
@@ -110,13 +94,6 @@ namespace PeriArlequin
   CriticalBondEnergyCriterion<dim>::needs_particle_scalars() const
   {
     return true;
-  }
-
-  template <int dim>
-  double
-  CriticalBondEnergyCriterion<dim>::critical_stretch() const
-  {
-    return 0;
   }
 
   template <int dim>

@@ -98,7 +98,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::compute_accelerations(const double time)
+  PDZone<dim>::compute_forces(const double time)
   {
     update_ghost_displacements();
     // A criterion that reads the scalars gets them for these displacements; they stay
@@ -109,8 +109,12 @@ namespace PeriArlequin
       {
         if (fracture->needs_particle_scalars())
           update_model_scalars();
-        const bool broke =
-          fracture->break_bonds(bonds, state.displacements(), make_array_view(model_scalars));
+        BreakableBonds<dim> breakable(bonds, state.displacements());
+        if (fracture->critical_stretch() > 0)
+          breakable.break_above_stretch(fracture->critical_stretch());
+        else
+          fracture->break_bonds(breakable, make_array_view(model_scalars));
+        const bool broke = breakable.n_broken() > 0;
         if (broke)
           bonds.states_changed();
         scalars_current =
@@ -119,7 +123,12 @@ namespace PeriArlequin
     if (checks_overlap)
       check_damage_near_overlap(time);
     evaluate_model(scalars_current);
+  }
 
+  template <int dim>
+  void
+  PDZone<dim>::compute_accelerations(const double time)
+  {
     const double rho = material.density, volume = particle_volume();
     const auto   a          = state.accelerations();
     const bool   loaded     = problem_data->has_body_force || problem_data->has_tractions();

@@ -397,87 +397,96 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  CrackDiagnostics<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Damage threshold",
+                damage_threshold,
+                Patterns::Double(0, 1),
+                "Damage from which a particle counts as cracked [-]. A particle next to the "
+                "faces of a straight crack has a damage near 0.5.");
+    entries.add("Link distance",
+                link_distance,
+                Patterns::Double(1),
+                "Cracked particles at most this far apart belong to one crack [lattice "
+                "spacings].");
+    entries.add("Branch separation",
+                branch_separation,
+                Patterns::Double(0),
+                "A tip is the particle farthest along its crack within this distance; two "
+                "branches are told apart once their tips are farther apart [horizons].");
+    entries.add("Speed window",
+                speed_window,
+                Patterns::Integer(1),
+                "Tip speeds are least-squares slopes of the path length over this many "
+                "recorded intervals (Output/Energy interval steps each) [-].");
+    entries.add("Reported branches",
+                reported_branches,
+                Patterns::Integer(1, 64),
+                "Branches given columns in the history, in the order they appeared [-].");
+    entries.add_parsed<std::optional<Point<dim>>>(
+      "Initial tip",
+      initial_tip,
+      "",
+      [](const std::string &text, const std::string &path) -> std::optional<Point<dim>> {
+        if (text.empty())
+          return {};
+        const std::vector<std::string> coordinates = Utilities::split_string_list(text);
+        bool                           valid       = coordinates.size() == dim;
+        for (unsigned int d = 0; valid && d < dim; ++d)
+          valid = Patterns::Double().match(coordinates[d]);
+        if (!valid)
+          throw_invalid_parameter(path,
+                                  text,
+                                  "empty or " + std::to_string(dim) + " coordinates 'x, y" +
+                                    (dim == 3 ? ", z" : "") + "' [m]");
+        Point<dim> tip;
+        for (unsigned int d = 0; d < dim; ++d)
+          tip[d] = Utilities::string_to_double(coordinates[d]);
+        return tip;
+      },
+      "Tip of the pre-crack whose initiation and kink are followed, 'x, y[, z]' [m] (in 3D "
+      "only x and y count: the front runs along z). Empty: none. Adds the columns "
+      "initiation_time (first new broken bond of a particle within a horizon of the tip), "
+      "growth_time (first new cracked particle a horizon or more ahead of it), kink_angle "
+      "[deg] and kink_particles, and, when the boundaries carry a crack-tip field, its K_I, "
+      "K_II [Pa m^1/2] and G [J/m^2] now and at initiation and growth.");
+    entries.add("Initial direction",
+                initial_direction,
+                Patterns::Double(-360, 360),
+                "Direction in which the pre-crack points at its tip, from the x axis [deg]; "
+                "kink angles are measured from it, counter-clockwise positive.");
+    entries.add_parsed<std::array<double, 2>>(
+      "Kink fit range",
+      kink_fit_range,
+      "1, 5",
+      [](const std::string &text, const std::string &path) {
+        const std::vector<std::string> values = Utilities::split_string_list(text);
+        const bool                     valid =
+          Patterns::List(Patterns::Double(0), 2, 2).match(text) &&
+          Utilities::string_to_double(values[1]) > Utilities::string_to_double(values[0]);
+        if (!valid)
+          throw_invalid_parameter(path,
+                                  text,
+                                  "two distances, the second larger than the first [horizons]");
+        return std::array<double, 2>{
+          {Utilities::string_to_double(values[0]), Utilities::string_to_double(values[1])}};
+      },
+      "Least and largest distance from the initial tip of the new cracked particles whose "
+      "line through the tip gives the kink angle [horizons].");
+  }
+
+  template <int dim>
+  void
   CrackDiagnostics<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Damage threshold",
-                      "0.35",
-                      Patterns::Double(0, 1),
-                      "Damage from which a particle counts as cracked [-]. A particle next to "
-                      "the faces of a straight crack has a damage near 0.5.");
-    prm.declare_entry("Link distance",
-                      "2",
-                      Patterns::Double(1),
-                      "Cracked particles at most this far apart belong to one crack "
-                      "[lattice spacings].");
-    prm.declare_entry("Branch separation",
-                      "2",
-                      Patterns::Double(0),
-                      "A tip is the particle farthest along its crack within this distance; "
-                      "two branches are told apart once their tips are farther apart [horizons].");
-    prm.declare_entry("Speed window",
-                      "5",
-                      Patterns::Integer(1),
-                      "Tip speeds are least-squares slopes of the path length over this many "
-                      "recorded intervals (Output/Energy interval steps each) [-].");
-    prm.declare_entry("Reported branches",
-                      "4",
-                      Patterns::Integer(1, 64),
-                      "Branches given columns in the history, in the order they appeared [-].");
-    prm.declare_entry("Initial tip",
-                      "",
-                      Patterns::Anything(),
-                      "Tip of the pre-crack whose initiation and kink are followed, 'x, y[, z]' "
-                      "[m] (in 3D only x and y count: the front runs along z). Empty: none. "
-                      "Adds the columns initiation_time (first new broken bond of a particle "
-                      "within a horizon of the tip), growth_time (first new cracked particle a "
-                      "horizon or more ahead of it), kink_angle [deg] and kink_particles, and, "
-                      "when the boundaries carry a crack-tip field, its K_I, K_II [Pa m^1/2] "
-                      "and G [J/m^2] now and at initiation and growth.");
-    prm.declare_entry("Initial direction",
-                      "0",
-                      Patterns::Double(-360, 360),
-                      "Direction in which the pre-crack points at its tip, from the x axis "
-                      "[deg]; kink angles are measured from it, counter-clockwise positive.");
-    prm.declare_entry("Kink fit range",
-                      "1, 5",
-                      Patterns::List(Patterns::Double(0), 2, 2),
-                      "Least and largest distance from the initial tip of the new cracked "
-                      "particles whose line through the tip gives the kink angle [horizons].");
+    ParameterEntries::declare_here<CrackDiagnostics<dim>>(prm);
   }
 
   template <int dim>
   void
   CrackDiagnostics<dim>::parse_parameters(ParameterHandler &prm)
   {
-    damage_threshold           = prm.get_double("Damage threshold");
-    link_distance              = prm.get_double("Link distance");
-    branch_separation          = prm.get_double("Branch separation");
-    speed_window               = prm.get_integer("Speed window");
-    reported_branches          = prm.get_integer("Reported branches");
-    const std::string tip_text = prm.get("Initial tip");
-    has_initial_tip            = !tip_text.empty();
-    if (has_initial_tip)
-      {
-        const std::vector<std::string> coordinates = Utilities::split_string_list(tip_text);
-        bool                           valid       = coordinates.size() == dim;
-        for (unsigned int d = 0; valid && d < dim; ++d)
-          valid = Patterns::Double().match(coordinates[d]);
-        if (!valid)
-          throw_invalid_parameter("Postprocess/cracks/Initial tip",
-                                  tip_text,
-                                  "empty or " + std::to_string(dim) + " coordinates 'x, y" +
-                                    (dim == 3 ? ", z" : "") + "' [m]");
-        for (unsigned int d = 0; d < dim; ++d)
-          initial_tip[d] = Utilities::string_to_double(coordinates[d]);
-      }
-    initial_direction = prm.get_double("Initial direction");
-    const auto range =
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Kink fit range")));
-    if (!(range[1] > range[0]))
-      throw_invalid_parameter("Postprocess/cracks/Kink fit range",
-                              prm.get("Kink fit range"),
-                              "two distances, the second larger than the first [horizons]");
-    kink_fit_range = {{range[0], range[1]}};
+    ParameterEntries::parse_here(prm, *this, "Postprocess/cracks/");
   }
 
   template <int dim>
@@ -493,10 +502,10 @@ namespace PeriArlequin
     if (!tracker)
       tracker = std::make_unique<CrackTracker<dim>>(link_distance * parameters.lattice_spacing,
                                                     branch_separation * parameters.horizon());
-    if (!initiation && has_initial_tip)
+    if (!initiation && initial_tip)
       {
         initiation =
-          std::make_unique<CrackInitiation<dim>>(initial_tip,
+          std::make_unique<CrackInitiation<dim>>(*initial_tip,
                                                  initial_direction * numbers::PI / 180.,
                                                  parameters.horizon(),
                                                  std::array<double, 2>{

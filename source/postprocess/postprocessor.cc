@@ -118,20 +118,27 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  Probes<dim>::entries(ParameterEntries &entries)
+  {
+    entries.add("Points",
+                points_text,
+                Patterns::Anything(),
+                "Points 'x, y[, z] : x, y[, z] : ...' [m] whose velocity is recorded.");
+  }
+
+  template <int dim>
+  void
   Probes<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Points",
-                      "",
-                      Patterns::Anything(),
-                      "Points 'x, y[, z] : x, y[, z] : ...' [m] whose velocity is recorded.");
+    ParameterEntries::declare_here<Probes<dim>>(prm);
   }
 
   template <int dim>
   void
   Probes<dim>::parse_parameters(ParameterHandler &prm)
   {
-    points_text = prm.get("Points");
-    points      = parse_point_list<dim>(points_text, "Postprocess/probes/Points");
+    ParameterEntries::parse_here(prm, *this, "Postprocess/probes/");
+    points = parse_point_list<dim>(points_text, "Postprocess/probes/Points");
   }
 
   template <int dim>

@@ -12,49 +12,52 @@
 namespace PeriArlequin
 {
   void
+  WaveReflection::entries(ParameterEntries &entries)
+  {
+    entries.add("FE cell size", fe_cell_size, Patterns::Double(0), "FE cell size h [m].");
+    entries.add("Size ratio",
+                size_ratio,
+                Patterns::Integer(4),
+                "h / dx, the FE cell over the PD lattice spacing; at least 4 so that a cell "
+                "holds the bonds of m = 3 [-].");
+    entries.add("Overlap cells",
+                overlap_cells,
+                Patterns::Integer(1),
+                "Overlap width in FE cells [-].");
+    entries.add("Wavelength", wavelength, Patterns::Double(0), "The packet's wavelength / h [-].");
+    entries.add("Horizon factor", horizon_factor, Patterns::Double(1), "m = delta / dx [-].");
+    entries.add("Time step fraction",
+                time_step_fraction,
+                Patterns::Double(0),
+                "The time step over 0.2 dx / c_L (about a fifth of the PD stable step) [-].");
+    entries.add("Incident side",
+                from_fe,
+                SelectionNames<bool>{{"pd", false}, {"fe", true}},
+                "Where the packet starts: in the pure PD zone or in the FE zone.");
+    entries.add_parsed<std::string>(
+      "Coupling",
+      coupling,
+      "set Method = weak",
+      [](const std::string &text, const std::string &) {
+        std::string lines;
+        for (const auto &entry : Utilities::split_string_list(text, ';'))
+          lines += entry + "\n";
+        return lines;
+      },
+      "Entries of the Coupling subsection other than the regions, separated by ';' (e.g. "
+      "'set Method = weak; set Damping constant = 30').");
+  }
+
+  void
   WaveReflection::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Wave reflection");
-    prm.declare_entry("FE cell size", "0.02", Patterns::Double(0), "FE cell size h [m].");
-    prm.declare_entry("Size ratio",
-                      "8",
-                      Patterns::Integer(4),
-                      "h / dx, the FE cell over the PD lattice spacing; at least 4 so that a "
-                      "cell holds the bonds of m = 3 [-].");
-    prm.declare_entry("Overlap cells", "5", Patterns::Integer(1), "Overlap width in FE cells [-].");
-    prm.declare_entry("Wavelength", "6", Patterns::Double(0), "The packet's wavelength / h [-].");
-    prm.declare_entry("Horizon factor", "3.015", Patterns::Double(1), "m = delta / dx [-].");
-    prm.declare_entry("Time step fraction",
-                      "1",
-                      Patterns::Double(0),
-                      "The time step over 0.2 dx / c_L (about a fifth of the PD stable step) [-].");
-    prm.declare_entry("Incident side",
-                      "pd",
-                      Patterns::Selection("pd|fe"),
-                      "Where the packet starts: in the pure PD zone or in the FE zone.");
-    prm.declare_entry("Coupling",
-                      "set Method = weak",
-                      Patterns::Anything(),
-                      "Entries of the Coupling subsection other than the regions, separated by "
-                      "';' (e.g. 'set Method = weak; set Damping constant = 30').");
-    prm.leave_subsection();
+    ParameterEntries::declare<WaveReflection>(prm, "Wave reflection");
   }
 
   void
   WaveReflection::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Wave reflection");
-    fe_cell_size       = prm.get_double("FE cell size");
-    size_ratio         = prm.get_integer("Size ratio");
-    overlap_cells      = prm.get_integer("Overlap cells");
-    wavelength         = prm.get_double("Wavelength");
-    horizon_factor     = prm.get_double("Horizon factor");
-    time_step_fraction = prm.get_double("Time step fraction");
-    from_fe            = prm.get("Incident side") == "fe";
-    coupling.clear();
-    for (const auto &entry : Utilities::split_string_list(prm.get("Coupling"), ';'))
-      coupling += entry + "\n";
-    prm.leave_subsection();
+    ParameterEntries::parse(prm, "Wave reflection", *this);
     if (size_ratio < horizon_factor + 0.5)
       throw_invalid_parameter("Wave reflection/Size ratio",
                               std::to_string(size_ratio),

@@ -86,9 +86,13 @@ namespace PeriArlequin
   void
   PredictorCorrector<dim>::compute_trial_accelerations()
   {
+    const double t = time.get_current_time();
     for (IntegratedZone *zone : zones)
-      timed(zone->name() + " forces",
-            [&] { zone->compute_accelerations(time.get_current_time()); });
+      timed(zone->name() + " forces", [&] { zone->compute_forces(t); });
+    if (coupling)
+      timed("coupling", [&] { coupling->add_interface_forces(t); });
+    for (IntegratedZone *zone : zones)
+      timed(zone->name() + " forces", [&] { zone->compute_accelerations(t); });
   }
 
   template <int dim>

@@ -98,6 +98,7 @@ namespace
   {
     pd.predict(dt);
     pd.impose_prescribed_motion(time);
+    pd.compute_forces(time);
     pd.compute_accelerations(time);
     pd.correct(dt);
   }
@@ -111,6 +112,7 @@ extend_zone()
   auto              extended = make_simulator<dim>(parameters<dim>(box<dim>(0, 0.01)));
   extended->setup();
   auto &pd = *extended->get_pd_zone();
+  pd.compute_forces(0.);
   pd.compute_accelerations(0.);
   const auto n_a         = pd.n_global_particles();
   const auto broken_in_a = pd.n_global_broken_bonds();
@@ -123,11 +125,13 @@ extend_zone()
     std::tie(pd.get_state().displacements()[i], pd.get_state().velocities()[i]) =
       initial_state(pd.reference_positions()[i]);
   pd.update_ghost_displacements();
+  pd.compute_forces(0.);
   pd.compute_accelerations(0.);
 
   auto direct = make_simulator<dim>(parameters<dim>(box<dim>(0, 0.015)));
   direct->setup();
   auto &reference = *direct->get_pd_zone();
+  reference.compute_forces(0.);
   reference.compute_accelerations(0.);
 
   const double n_added = Utilities::MPI::sum(static_cast<double>(added.size()), MPI_COMM_WORLD);

@@ -34,28 +34,13 @@ namespace UserCriteria
                const PeriArlequin::PDMaterialModel<dim> &,
                const BondFamilies<dim> &) override
     {}
-    bool
-    break_bonds(BondFamilies<dim>              &bonds,
-                ArrayView<const Tensor<1, dim>> u,
-                ArrayView<const double>) const override
+    void
+    break_bonds(PeriArlequin::BreakableBonds<dim> &bonds, ArrayView<const double>) const override
     {
-      bool broke = false;
-      for (unsigned int i = 0; i < bonds.n_owned; ++i)
-        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-          if (bonds.state[n] == BondFamilies<dim>::intact &&
-              BondFamilies<dim>::extension(bonds.stencil[bonds.stencil_index[n]],
-                                           u[bonds.neighbor(i, n)] - u[i])
-                  .first > critical_extension)
-            {
-              bonds.state[n] = BondFamilies<dim>::broken;
-              broke          = true;
-            }
-      return broke;
-    }
-    double
-    critical_stretch() const override
-    {
-      return 0;
+      bonds.for_each_intact([&](const auto &bond) {
+        if (bond.extension > critical_extension)
+          bonds.break_bond(bond);
+      });
     }
 
   private:

@@ -1,6 +1,7 @@
 #ifndef periarlequin_adaptivity_conversion_criterion_h
 #define periarlequin_adaptivity_conversion_criterion_h
 
+#include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
@@ -70,6 +71,9 @@ namespace PeriArlequin
   class DamageProximityCriterion : public ConversionCriterion<dim>
   {
   public:
+    /** The entries of subsection "Adaptive PD zone/<name>", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -97,6 +101,9 @@ namespace PeriArlequin
   class StrainCriterion : public ConversionCriterion<dim>
   {
   public:
+    /** The entries of subsection "Adaptive PD zone/<name>", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void

@@ -33,7 +33,20 @@ namespace PeriArlequin
   class CrackTipField : public Function<dim>
   {
   public:
-    /** Entries of "Boundary conditions/Crack tip field". */
+    /** The entries of "Boundary conditions/Crack tip field", as given (angles in degrees). */
+    struct Input
+    {
+      std::vector<unsigned int> boundary_ids;
+      std::vector<double>       tip              = {0., 0.};
+      double                    direction        = 0.;
+      std::string               stress_intensity = "0";
+      double                    phase_angle      = 0.;
+
+      void
+      entries(ParameterEntries &entries);
+    };
+
+    /** Declare the entries of "Boundary conditions/Crack tip field". */
     static void
     declare_parameters(ParameterHandler &prm);
 

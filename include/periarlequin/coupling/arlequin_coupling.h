@@ -43,6 +43,18 @@ namespace PeriArlequin
       weak
     };
 
+    /** The weak coupling's lambda-mesh (subsection Coupling/weak). */
+    struct MultiplierGrid
+    {
+      /** Spacing in FE cells; 1: the FE nodes [-]. */
+      double spacing = 2;
+      /** Where the grid starts, a fraction of its spacing before the overlap's corner [-]. */
+      double offset = 0;
+
+      void
+      entries(ParameterEntries &entries);
+    };
+
     ArlequinCoupling(const Parameters::Coupling &parameters, const MultiplierMesh mesh);
 
     /** The weak coupling's own entries (subsection Coupling/weak). */
@@ -60,6 +72,8 @@ namespace PeriArlequin
                const double              time_step) override;
     void
     set_slave_displacements() override;
+    void
+    add_interface_forces(const double time) override;
     void
     apply_damping() override;
     void
@@ -90,13 +104,10 @@ namespace PeriArlequin
 
     const Parameters::Coupling parameters;
     const MultiplierMesh       mesh;
-    /** Spacing of the weak coupling's lambda-mesh in FE cells; 1: the FE nodes [-]. */
-    double multiplier_spacing = 2;
-    /** Where that grid starts, a fraction of its spacing before the overlap's corner [-]. */
-    double       multiplier_grid_offset = 0;
-    FEZone<dim> *fe_zone                = nullptr;
-    PDZone<dim> *pd_zone                = nullptr;
-    double       time_step              = 0;
+    MultiplierGrid             multiplier_grid;
+    FEZone<dim>               *fe_zone   = nullptr;
+    PDZone<dim>               *pd_zone   = nullptr;
+    double                     time_step = 0;
 
     /** Owned PD nodes of the overlap (0 < alpha < 1), the rows of N. */
     std::vector<unsigned int>              overlap_particles;

@@ -45,8 +45,8 @@ namespace PeriArlequin
 
     /**
      * Build the operators once both zones are set up (after FEZone::initialize_state() and
-     * PDZone::setup()); may set the FE zone's force hooks. Called again, from scratch, after
-     * an adaptive PD zone grew (FEZone::restrict_to(), PDZone::extend()).
+     * PDZone::setup()); may set the FE zone's nodal force weights. Called again, from scratch,
+     * after an adaptive PD zone grew (FEZone::restrict_to(), PDZone::extend()).
      */
     virtual void
     initialize(const BlendingField<dim> &blending,
@@ -57,6 +57,12 @@ namespace PeriArlequin
     /** Slaves follow their masters' displacements (after the predictor). */
     virtual void
     set_slave_displacements() = 0;
+    /**
+     * Eq. 58-59: between the zones' forces and their accelerations at @p time, the forces
+     * and loads of the slaves act on the nodes they follow (N^T f on the FE nodes).
+     */
+    virtual void
+    add_interface_forces(const double time) = 0;
 
     /** Eq. 76-79: damp the fine-scale motion (after the trial accelerations). */
     virtual void
@@ -91,17 +97,26 @@ namespace PeriArlequin
   class SlaveLayer;
 
   /**
-   * The FE forces of a coupled run, set as the FE zone's hooks: under force blending the FE
-   * internal force is weighted per node with alpha_I, under energy blending the slaves'
-   * forces act on the FE nodes (N^T f); under any, so do the slaves' loads. Shared by the
-   * couplings.
+   * Force blending: the FE internal force is weighted per node with alpha_I (the FE zone's
+   * nodal force weights). Shared by the couplings; nothing under the other blendings.
    */
   template <int dim>
   void
-  connect_fe_forces(const Parameters::Coupling &parameters,
-                    const BlendingField<dim>   &blending,
-                    FEZone<dim>                &fe_zone,
-                    SlaveLayer<dim>            &slaves);
+  set_fe_force_weights(const Parameters::Coupling &parameters,
+                       const BlendingField<dim>   &blending,
+                       FEZone<dim>                &fe_zone);
+
+  /**
+   * The FE side of add_interface_forces(): the slaves' loads add to the FE applied forces
+   * (under any blending), their PD forces N^T f to the FE interface forces (energy blending).
+   * Shared by the couplings.
+   */
+  template <int dim>
+  void
+  add_slave_forces(const Parameters::Coupling &parameters,
+                   SlaveLayer<dim>            &slaves,
+                   const double                time,
+                   FEZone<dim>                &fe_zone);
 
   /** The registry of couplings: a coupling is created from the coupling parameters. */
   template <int dim>

@@ -35,6 +35,8 @@ namespace PeriArlequin
     /** FE slaves from the PD lattice first, then PD slaves from the FE field. */
     void
     set_slave_displacements() override;
+    void
+    add_interface_forces(const double time) override;
     /** No damping: does nothing. */
     void
     apply_damping() override;

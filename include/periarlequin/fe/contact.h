@@ -1,6 +1,7 @@
 #ifndef periarlequin_fe_contact_h
 #define periarlequin_fe_contact_h
 
+#include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -126,6 +127,9 @@ namespace PeriArlequin
   class RigidWallContact : public Contact<dim>
   {
   public:
+    /** The entries of subsection "Contact/<name>", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -148,11 +152,14 @@ namespace PeriArlequin
       Point<dim>                    position;
     };
 
-    std::string            point_text;
-    Point<dim>             wall_point;
-    Tensor<1, dim>         normal;
-    std::set<unsigned int> boundary_ids;
-    std::vector<Node>      nodes;
+    /** The entries as given (Point and Normal kept as text for messages). */
+    std::string               point_text  = dim == 2 ? "0, 0" : "0, 0, 0";
+    std::string               normal_text = dim == 2 ? "-1, 0" : "-1, 0, 0";
+    std::vector<unsigned int> boundary_id_list;
+    Point<dim>                wall_point;
+    Tensor<1, dim>            normal;
+    std::set<unsigned int>    boundary_ids;
+    std::vector<Node>         nodes;
   };
 
   /**
@@ -179,6 +186,9 @@ namespace PeriArlequin
   class ElasticTargetContact : public Contact<dim>
   {
   public:
+    /** The entries of subsection "Contact/<name>", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -225,7 +235,9 @@ namespace PeriArlequin
     double
     pair_gap(const Pair &pair, const std::vector<Point<dim>> &x) const;
 
-    std::set<unsigned int> striker_ids, target_ids;
+    /** The entries as given, and as sets. */
+    std::vector<unsigned int> striker_id_list, target_id_list;
+    std::set<unsigned int>    striker_ids, target_ids;
     /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
     std::vector<BoundaryVertex<dim>> nodes;
     std::vector<Pair>                pairs;

@@ -85,7 +85,7 @@ namespace PeriArlequin
      * may have changed), and the displacement, velocity, acceleration and applied force keep
      * their values at the remaining nodes, as a solution transfer across the hp change does
      * for nodal elements. The prescribed DoFs are found again and the work done so far is
-     * kept. Nodal force weights, hooks and contact must be set again by their owners.
+     * kept. Nodal force weights and contact must be set again by their owners.
      */
     void
     restrict_to(const CellPredicate &in_fe_zone);
@@ -98,7 +98,7 @@ namespace PeriArlequin
     prepare_for_repartition();
     /**
      * After Triangulation::repartition(): DoFs, mass and stiffness on the new partition and
-     * the state received; as after restrict_to(), nodal force weights, hooks and contact must
+     * the state received; as after restrict_to(), nodal force weights and contact must
      * be set again by their owners.
      */
     void
@@ -132,9 +132,23 @@ namespace PeriArlequin
     void
     impose_prescribed_motion(const double time) override;
     /**
-     * a = M^-1 (F_ext - F_int + F_interface) with F_int = K_alpha u, weighted per node when
-     * nodal force weights are set (force blending), and F_interface from the interface-force
-     * hook (energy blending: the PD slaves' forces N^T f).
+     * F_int = K_alpha u, weighted per node when nodal force weights are set (force
+     * blending), and F_ext (body force, tractions) at @p time; F_interface set to zero.
+     */
+    void
+    compute_forces(const double time) override;
+    /**
+     * What a coupling adds to between compute_forces() and compute_accelerations(): the
+     * interface forces F_interface (energy blending: the PD slaves' forces N^T f) ...
+     */
+    VectorType &
+    interface_forces();
+    /** ... and the applied forces F_ext (the slaves' loads: they count in the work). */
+    VectorType &
+    applied_forces();
+    /**
+     * a = M^-1 (F_ext - F_int + F_interface), then contact, then the prescribed DoFs (their
+     * applied force takes the support reaction).
      */
     void
     compute_accelerations(const double time) override;
@@ -164,15 +178,6 @@ namespace PeriArlequin
     /** Force blending: F_int,I is multiplied by @p weights[I] (owned DoFs, local order). */
     void
     set_nodal_force_weights(const std::vector<double> &weights);
-    /** A force added to the FE nodes at every force evaluation (it adds into the vector). */
-    void
-    set_interface_force(const std::function<void(VectorType &)> &add_force);
-    /**
-     * A load added to the FE nodes at every force evaluation, given the time (it adds into
-     * the vector); it counts as applied force in the work.
-     */
-    void
-    set_additional_load(const std::function<void(double, VectorType &)> &add_load);
 
     /**
      * Contact forces from @p contact (nullptr: none) at every force evaluation, after the
@@ -301,12 +306,10 @@ namespace PeriArlequin
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */
-    std::vector<double>                       prescribed_velocity;
-    std::vector<double>                       prescribed_acceleration;
-    std::vector<double>                       nodal_force_weights;
-    std::function<void(VectorType &)>         add_interface_force;
-    std::function<void(double, VectorType &)> add_additional_load;
-    Contact<dim>                             *contact = nullptr;
+    std::vector<double> prescribed_velocity;
+    std::vector<double> prescribed_acceleration;
+    std::vector<double> nodal_force_weights;
+    Contact<dim>       *contact = nullptr;
     /** Whether any load or support does work (otherwise the work is not accounted). */
     bool   tracks_work = false;
     double work        = 0;

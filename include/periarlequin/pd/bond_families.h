@@ -106,8 +106,7 @@ namespace PeriArlequin
     {
       return layout;
     }
-    /** Call after changing entries of state (a fracture criterion did): refreshes the stencil view.
-     */
+    /** After entries of state changed (the PD zone's fracture pass): refresh the stencil view. */
     void
     states_changed();
 

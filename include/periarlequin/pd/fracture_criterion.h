@@ -3,6 +3,7 @@
 
 #include <periarlequin/base/plugin_registry.h>
 #include <periarlequin/pd/bond_families.h>
+#include <periarlequin/pd/breakable_bonds.h>
 #include <periarlequin/pd/material_model.h>
 #include <periarlequin/pd/pd_parameters.h>
 
@@ -52,22 +53,22 @@ namespace PeriArlequin
     needs_particle_scalars() const;
 
     /**
-     * Mark the intact bonds of the owned particles' families that fail under the
-     * displacements @p displacement (owned and ghost particles) as broken; @p scalars are
-     * the material model's particle scalars (owned and ghost) of these displacements if
-     * needs_particle_scalars(), otherwise of the last force evaluation. A bond to a ghost is held
-     * by two ranks, which must decide alike: decide from the bond's reference vector, the
-     * displacement difference of its ends (BondFamilies::extension is bit-identical on both) and
-     * symmetric functions of the scalars of its ends. Returns whether a bond broke here.
+     * A criterion that is a critical stretch s_c returns it (> 0): the PD zone then breaks
+     * the intact bonds whose stretch e / |xi| exceeds it in its own pass over the bonds, and
+     * break_bonds() is not called. 0 (the default): break_bonds() decides. The run's summary
+     * prints it.
      */
-    virtual bool
-    break_bonds(BondFamilies<dim>              &bonds,
-                ArrayView<const Tensor<1, dim>> displacement,
-                ArrayView<const double>         scalars) const = 0;
-
-    /** The critical bond stretch [-] for the run's summary; 0 if the criterion has none. */
     virtual double
-    critical_stretch() const = 0;
+    critical_stretch() const;
+
+    /**
+     * With critical_stretch() = 0: break the bonds that fail, visiting @p bonds (the intact
+     * bonds of the owned particles with their extensions). @p scalars are the material
+     * model's particle scalars (owned and ghost) of these displacements if
+     * needs_particle_scalars(), otherwise of the last force evaluation.
+     */
+    virtual void
+    break_bonds(BreakableBonds<dim> &bonds, ArrayView<const double> scalars) const;
   };
 
   /** The registry of fracture criteria. */
@@ -90,10 +91,6 @@ namespace PeriArlequin
     initialize(const Parameters::Peridynamics<dim> &parameters,
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
-    bool
-    break_bonds(BondFamilies<dim>              &bonds,
-                ArrayView<const Tensor<1, dim>> displacement,
-                ArrayView<const double>         scalars) const override;
     double
     critical_stretch() const override;
 
@@ -119,14 +116,10 @@ namespace PeriArlequin
     initialize(const Parameters::Peridynamics<dim> &parameters,
                const PDMaterialModel<dim>          &model,
                const BondFamilies<dim>             &bonds) override;
-    bool
-    break_bonds(BondFamilies<dim>              &bonds,
-                ArrayView<const Tensor<1, dim>> displacement,
-                ArrayView<const double>         scalars) const override;
+    void
+    break_bonds(BreakableBonds<dim> &bonds, ArrayView<const double> scalars) const override;
     bool
     needs_particle_scalars() const override;
-    double
-    critical_stretch() const override;
 
     /** The critical bond energy w_c [J/m^(2 dim)]. */
     double

@@ -127,7 +127,10 @@ namespace PeriArlequin
     /** Prescribed particles take their motion at @p time. */
     void
     impose_prescribed_motion(const double time) override;
-    /** Bond breaking, forces and accelerations at time @p time. */
+    /** Bond breaking (fracture on), then the force densities of the current displacements. */
+    void
+    compute_forces(const double time) override;
+    /** Accelerations of the free particles from the forces and the loads at @p time. */
     void
     compute_accelerations(const double time) override;
     /** v += dt/2 a, then the prescribed velocities of this step. */

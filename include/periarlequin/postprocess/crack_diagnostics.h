@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -208,6 +209,9 @@ namespace PeriArlequin
   class CrackDiagnostics : public Postprocessor<dim>
   {
   public:
+    /** The entries of subsection "Postprocess/cracks", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -239,8 +243,7 @@ namespace PeriArlequin
     unsigned int                       reported_branches = 4;
     std::unique_ptr<CrackTracker<dim>> tracker;
     /** Without an initial tip, no initiation and kink diagnostics. */
-    bool       has_initial_tip = false;
-    Point<dim> initial_tip;
+    std::optional<Point<dim>> initial_tip;
     /** In degrees. */
     double initial_direction = 0;
     /** In horizons. */

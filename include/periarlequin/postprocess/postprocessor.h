@@ -134,6 +134,9 @@ namespace PeriArlequin
   class Probes : public Postprocessor<dim>
   {
   public:
+    /** The entries of subsection "Postprocess/probes", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     static void
     declare_parameters(ParameterHandler &prm);
     void

@@ -1,6 +1,8 @@
 #ifndef periarlequin_postprocess_wave_reflection_h
 #define periarlequin_postprocess_wave_reflection_h
 
+#include <periarlequin/base/parameters.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -34,6 +36,9 @@ namespace PeriArlequin
    */
   struct WaveReflection
   {
+    /** The entries of the subsection "Wave reflection", declared and parsed. */
+    void
+    entries(ParameterEntries &entries);
     /** Declare the study's parameters in the subsection "Wave reflection". */
     static void
     declare_parameters(ParameterHandler &prm);

@@ -31,9 +31,17 @@ namespace PeriArlequin
     impose_prescribed_motion(const double time) = 0;
 
     /**
-     * Eq. 60: trial accelerations M^-1 (F_ext - F_int) at @p time, without multipliers;
-     * prescribed nodes keep their prescribed acceleration, and their applied force takes the
-     * support reaction.
+     * The forces of the current displacements at @p time: internal (and, for particles,
+     * bond breaking first) and applied. Between this and compute_accelerations() a coupling
+     * adds the forces the other zone exerts (the interface forces of eq. 58-59).
+     */
+    virtual void
+    compute_forces(const double time) = 0;
+
+    /**
+     * Eq. 60: trial accelerations M^-1 (F_ext - F_int + F_interface) at @p time, without
+     * multipliers; prescribed nodes keep their prescribed acceleration, and their applied
+     * force takes the support reaction.
      */
     virtual void
     compute_accelerations(const double time) = 0;

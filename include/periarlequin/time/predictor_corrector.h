@@ -25,9 +25,8 @@ namespace PeriArlequin
   {
   public:
     /**
-     * Integrate @p zones (in the order given: the PD zone before the FE zone, whose
-     * interface forces are the slaves' PD forces of the same step) from t = 0 to
-     * @p n_steps x @p time_step; @p coupling may be nullptr. Sections are timed in @p timer.
+     * Integrate @p zones from t = 0 to @p n_steps x @p time_step; @p coupling may be nullptr.
+     * Sections are timed in @p timer.
      */
     PredictorCorrector(const std::vector<IntegratedZone *> &zones,
                        Coupling<dim>                       *coupling,
@@ -67,7 +66,11 @@ namespace PeriArlequin
      */
     void
     slaves_follow_masters();
-    /** Eq. 60: trial accelerations without multipliers (PD first: see the constructor). */
+    /**
+     * Eq. 60: trial accelerations without multipliers: the forces of every zone, then the
+     * interface forces the coupling passes between them (the slaves' PD forces N^T f on the
+     * FE nodes), then the accelerations of every zone.
+     */
     void
     compute_trial_accelerations();
     /**
