@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.13)
 ## Runs one regression case and compares its energy history with the stored one by numdiff.
 ## The case file <name>.prm names the shipped parameter file it shortens and the tolerances:
 ##   # regression: parameter_files/<file>.prm

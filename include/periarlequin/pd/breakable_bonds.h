@@ -64,13 +64,9 @@ namespace PeriArlequin
             {
               const unsigned int j         = bonds.neighbor(i, n);
               const auto        &reference = bonds.stencil[bonds.stencil_index[n]];
-              visit(Bond{i,
-                         j,
-                         n,
-                         reference,
-                         BondFamilies<dim>::extension(reference, displacement[j] -
-                                                                   displacement[i])
-                           .first});
+              const double       extension =
+                BondFamilies<dim>::extension(reference, displacement[j] - displacement[i]).first;
+              visit(Bond{i, j, n, reference, extension});
             }
     }
 
