@@ -161,17 +161,14 @@ namespace PeriArlequin
       [&](const Point<dim> &x) { return blending.distance_to_pd_part(x) <= particle_reach; });
     InterpolationOperator<dim> interpolation;
     interpolation.reinit(fe_zone, pd_zone, added);
-    auto &fe_state = fe_zone.get_state();
-    auto &pd_state = pd_zone.get_state();
-    for (const auto &[fe_field, pd_field] :
-         {std::make_pair(&fe_state.displacement, pd_state.displacements()),
-          std::make_pair(&fe_state.velocity, pd_state.velocities()),
-          std::make_pair(&fe_state.acceleration, pd_state.accelerations())})
-      {
-        fe_field->update_ghost_values();
-        for (unsigned int r = 0; r < added.size(); ++r)
-          pd_field[added[r]] = interpolation.interpolate(*fe_field, r);
-      }
+    const auto &fe_state = fe_zone.get_state();
+    for (const auto *field : {&fe_state.displacement, &fe_state.velocity, &fe_state.acceleration})
+      field->update_ghost_values();
+    for (unsigned int r = 0; r < added.size(); ++r)
+      pd_zone.set_kinematics(added[r],
+                             interpolation.interpolate(fe_state.displacement, r),
+                             interpolation.interpolate(fe_state.velocity, r),
+                             interpolation.interpolate(fe_state.acceleration, r));
     pd_zone.update_ghost_displacements();
 
     fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); });
@@ -201,7 +198,7 @@ namespace PeriArlequin
         const Tensor<1, dim> correction =
           (momentum_before - fe_zone.linear_momentum() - pd_zone.linear_momentum()) / gained_mass;
         for (const unsigned int i : gained)
-          pd_state.velocities()[i] += correction;
+          pd_zone.add_to_velocity(i, correction);
       }
 
     conversion_energy += total_energy() - energy_before;

@@ -176,8 +176,7 @@ namespace PeriArlequin
   void
   ArlequinCoupling<dim>::enforce_constraint()
   {
-    auto &state = fe_zone->get_state();
-    constraint(state.velocity, pd_zone->get_state().velocities(), rhs);
+    constraint(fe_zone->get_state().velocity, pd_zone->get_state().velocities(), rhs);
     solver->solve(lambda, rhs);
 
     // Constraint forces -G lambda = -N^T H lambda on FE, +H lambda on PD.
@@ -187,15 +186,13 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < fe_scratch.locally_owned_size(); ++i)
       {
         const double correction = fe_inverse_mass.local_element(i) * fe_scratch.local_element(i);
-        state.velocity.local_element(i) -= dt * correction;
-        state.acceleration.local_element(i) -= correction;
+        fe_zone->correct_motion(i, -(dt * correction), -correction);
       }
     for (unsigned int r = 0; r < overlap_particles.size(); ++r)
       {
         const unsigned int   i          = overlap_particles[r];
         const Tensor<1, dim> correction = pd_inverse_mass[r] * overlap_values[r];
-        pd_zone->get_state().velocities()[i] += dt * correction;
-        pd_zone->get_state().accelerations()[i] += correction;
+        pd_zone->correct_motion(i, dt * correction, correction);
       }
   }
 

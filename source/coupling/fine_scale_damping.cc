@@ -52,9 +52,9 @@ namespace PeriArlequin
     for (unsigned int r = 0; r < particles.size(); ++r)
       {
         const unsigned int i = particles[r];
-        pd_zone.get_state().accelerations()[i] -=
-          coefficient[r] *
-          (pd_zone.get_state().velocities()[i] - overlap.interpolate(fe_velocity, r));
+        pd_zone.add_to_acceleration(i,
+                                    -(coefficient[r] * (pd_zone.get_state().velocities()[i] -
+                                                        overlap.interpolate(fe_velocity, r))));
       }
   }
 

@@ -46,14 +46,13 @@ namespace PeriArlequin
   void
   MasterSlaveCoupling<dim>::set_slave_displacements()
   {
-    auto &displacement = fe_zone->get_state().displacement;
     pd_zone->update_ghost_displacements();
     for (const auto &slave : fe_slaves)
       {
         double value = 0;
         for (const auto &[j, w] : slave.weights)
           value += w * pd_zone->get_state().displacements()[j][slave.component];
-        displacement.local_element(slave.dof) = value;
+        fe_zone->set_displacement(slave.dof, value);
       }
     slaves.follow_displacements();
   }
@@ -79,7 +78,6 @@ namespace PeriArlequin
   void
   MasterSlaveCoupling<dim>::set_slave_velocities()
   {
-    auto &state = fe_zone->get_state();
     pd_motion.resize(2 * dim * pd_zone->reference_positions().size());
     for (unsigned int i = 0; i < pd_zone->n_owned_particles(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
@@ -96,8 +94,7 @@ namespace PeriArlequin
             v += w * pd_motion[2 * dim * j + slave.component];
             a += w * pd_motion[2 * dim * j + dim + slave.component];
           }
-        state.velocity.local_element(slave.dof)     = v;
-        state.acceleration.local_element(slave.dof) = a;
+        fe_zone->set_velocity_and_acceleration(slave.dof, v, a);
       }
     slaves.follow_velocities();
   }

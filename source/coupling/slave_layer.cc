@@ -31,7 +31,7 @@ namespace PeriArlequin
     const VectorType &u = fe_zone->get_state().displacement;
     u.update_ghost_values();
     for (unsigned int r = 0; r < particles.size(); ++r)
-      pd_zone->get_state().displacements()[particles[r]] = interpolation.interpolate(u, r);
+      pd_zone->set_displacement(particles[r], interpolation.interpolate(u, r));
   }
 
   template <int dim>
@@ -42,12 +42,9 @@ namespace PeriArlequin
     state.velocity.update_ghost_values();
     state.acceleration.update_ghost_values();
     for (unsigned int r = 0; r < particles.size(); ++r)
-      {
-        pd_zone->get_state().velocities()[particles[r]] =
-          interpolation.interpolate(state.velocity, r);
-        pd_zone->get_state().accelerations()[particles[r]] =
-          interpolation.interpolate(state.acceleration, r);
-      }
+      pd_zone->set_velocity_and_acceleration(particles[r],
+                                             interpolation.interpolate(state.velocity, r),
+                                             interpolation.interpolate(state.acceleration, r));
   }
 
   template <int dim>

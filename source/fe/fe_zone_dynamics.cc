@@ -216,13 +216,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  typename FEZone<dim>::State &
-  FEZone<dim>::get_state()
-  {
-    return state;
-  }
-
-  template <int dim>
   const typename FEZone<dim>::State &
   FEZone<dim>::get_state() const
   {
@@ -264,7 +257,6 @@ namespace PeriArlequin
   template double         FEZone<dim>::strain_energy() const;                                    \
   template Tensor<1, dim> FEZone<dim>::linear_momentum() const;                                  \
   template double         FEZone<dim>::external_work() const;                                    \
-  template FEZone<dim>::State                            &FEZone<dim>::get_state();              \
   template const FEZone<dim>::State                      &FEZone<dim>::get_state() const;        \
   template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()     \
     const;                                                                                       \

@@ -352,13 +352,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  ParticleState<dim> &
-  PDZone<dim>::get_state()
-  {
-    return state;
-  }
-
-  template <int dim>
   const ParticleState<dim> &
   PDZone<dim>::get_state() const
   {

@@ -24,9 +24,12 @@ main(int argc, char **argv)
       strip_case("strict", "energy", "cg", false, false, "0; 0", "0; 0", 1e-7, 1e-7, 1));
     simulator->setup();
     const auto &dof_handler = simulator->get_fe_zone().get_dof_handler();
-    auto       &u           = simulator->get_fe_zone().get_state().displacement;
+    auto       &fe          = simulator->get_fe_zone();
+    const auto &u           = fe.get_state().displacement;
+    // A rough field: pseudo-random per DoF, from the DoF's global index.
+    unsigned int local = 0;
     for (const auto i : u.locally_owned_elements())
-      u[i] = 1e-3 * std::sin(12.9898 * i + 78.233 * std::sin(4.1414 * i));
+      fe.set_displacement(local++, 1e-3 * std::sin(12.9898 * i + 78.233 * std::sin(4.1414 * i)));
     u.update_ghost_values();
 
     auto &pd       = *simulator->get_pd_zone();
@@ -50,7 +53,7 @@ main(int argc, char **argv)
         }
       else if (pd.blending_weights()[i] > 0)
         {
-          pd.get_state().displacements()[i] = interpolated(i);
+          pd.set_displacement(i, interpolated(i));
           ++n_overlap;
         }
     report("slave particles checked", n_slaves);

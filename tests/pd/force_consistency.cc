@@ -53,17 +53,20 @@ check_consistency()
           k = i;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double saved                   = pd.get_state().displacements()[k][d];
-          pd.get_state().displacements()[k][d] = saved + h;
+          const Tensor<1, dim> saved = pd.get_state().displacements()[k];
+          Tensor<1, dim>       moved = saved;
+          moved[d]                   = saved[d] + h;
+          pd.set_displacement(k, moved);
           pd.compute_internal_forces();
-          const double plus                    = pd.strain_energy();
-          pd.get_state().displacements()[k][d] = saved - h;
+          const double plus = pd.strain_energy();
+          moved[d]          = saved[d] - h;
+          pd.set_displacement(k, moved);
           pd.compute_internal_forces();
-          const double minus                   = pd.strain_energy();
-          pd.get_state().displacements()[k][d] = saved;
-          const double derivative              = (plus - minus) / (2 * h);
-          largest                              = std::max(largest, std::abs(force[k][d] * volume));
-          worst = std::max(worst, std::abs(force[k][d] * volume + derivative));
+          const double minus = pd.strain_energy();
+          pd.set_displacement(k, saved);
+          const double derivative = (plus - minus) / (2 * h);
+          largest                 = std::max(largest, std::abs(force[k][d] * volume));
+          worst                   = std::max(worst, std::abs(force[k][d] * volume + derivative));
         }
     }
   check_below(std::to_string(dim) + "D max |f V + dE/du| / max |f V| over sampled particles",

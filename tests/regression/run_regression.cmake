@@ -46,7 +46,10 @@ set(_reference ${_dir}/${_name}.csv)
 if(RANKS AND EXISTS ${_dir}/${_name}.mpirun=${RANKS}.csv)
   set(_reference ${_dir}/${_name}.mpirun=${RANKS}.csv)
 endif()
-if("$ENV{PERIARLEQUIN_UPDATE_REGRESSION}" STREQUAL "1")
+# Updating: the 1-rank run writes <name>.csv; a run on N ranks writes only a reference of its
+# own (<name>.mpirun=N.csv, where one exists) and is compared with <name>.csv otherwise.
+if("$ENV{PERIARLEQUIN_UPDATE_REGRESSION}" STREQUAL "1" AND
+   (NOT RANKS OR RANKS EQUAL 1 OR _reference MATCHES "mpirun="))
   file(COPY_FILE regression_energy.csv ${_reference})
   message(STATUS "Wrote ${_reference}")
   return()

@@ -167,10 +167,38 @@ namespace PeriArlequin
     double
     external_work() const override;
 
-    State &
-    get_state();
     const State &
     get_state() const;
+
+    /**
+     * @name What others may change of the nodes' motion between the parts of a step (locally
+     * owned DoF @p i, local index): the bad coupling's FE slaves follow the PD lattice, the
+     * multipliers correct the overlap's velocities.
+     */
+    /** @{ */
+    void
+    set_displacement(const unsigned int i, const double displacement)
+    {
+      state.displacement.local_element(i) = displacement;
+    }
+    void
+    set_velocity_and_acceleration(const unsigned int i,
+                                  const double       velocity,
+                                  const double       acceleration)
+    {
+      state.velocity.local_element(i)     = velocity;
+      state.acceleration.local_element(i) = acceleration;
+    }
+    /** v += @p velocity_change, a += @p acceleration_change. */
+    void
+    correct_motion(const unsigned int i,
+                   const double       velocity_change,
+                   const double       acceleration_change)
+    {
+      state.velocity.local_element(i) += velocity_change;
+      state.acceleration.local_element(i) += acceleration_change;
+    }
+    /** @} */
     /** The locally owned DoFs whose displacement is prescribed. */
     const std::vector<PrescribedDoF> &
     get_prescribed_dofs() const;

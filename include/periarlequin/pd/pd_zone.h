@@ -202,11 +202,59 @@ namespace PeriArlequin
     /** Particle ids (lattice site ids), owned particles then ghosts. */
     ArrayView<const types::particle_index>
     particle_ids() const;
-    /** Displacements, velocities and accelerations (the coupling writes the slaves'). */
-    ParticleState<dim> &
-    get_state();
+    /** Displacements, velocities and accelerations, owned particles then ghosts. */
     const ParticleState<dim> &
     get_state() const;
+
+    /**
+     * @name What others may change of the particles' motion between the parts of a step
+     * (owned particle @p i): the slaves follow the FE field, the multipliers correct the
+     * overlap's velocities, the damping slows its fine-scale motion, an adaptive zone gives
+     * new particles the FE field.
+     */
+    /** @{ */
+    void
+    set_displacement(const unsigned int i, const Tensor<1, dim> &displacement)
+    {
+      state.displacements()[i] = displacement;
+    }
+    void
+    set_velocity_and_acceleration(const unsigned int    i,
+                                  const Tensor<1, dim> &velocity,
+                                  const Tensor<1, dim> &acceleration)
+    {
+      state.velocities()[i]    = velocity;
+      state.accelerations()[i] = acceleration;
+    }
+    void
+    set_kinematics(const unsigned int    i,
+                   const Tensor<1, dim> &displacement,
+                   const Tensor<1, dim> &velocity,
+                   const Tensor<1, dim> &acceleration)
+    {
+      set_displacement(i, displacement);
+      set_velocity_and_acceleration(i, velocity, acceleration);
+    }
+    /** v += @p velocity_change, a += @p acceleration_change. */
+    void
+    correct_motion(const unsigned int    i,
+                   const Tensor<1, dim> &velocity_change,
+                   const Tensor<1, dim> &acceleration_change)
+    {
+      state.velocities()[i] += velocity_change;
+      state.accelerations()[i] += acceleration_change;
+    }
+    void
+    add_to_velocity(const unsigned int i, const Tensor<1, dim> &velocity_change)
+    {
+      state.velocities()[i] += velocity_change;
+    }
+    void
+    add_to_acceleration(const unsigned int i, const Tensor<1, dim> &acceleration_change)
+    {
+      state.accelerations()[i] += acceleration_change;
+    }
+    /** @} */
     /** Internal force density of the owned particles at the last force evaluation [N/m^dim]. */
     ArrayView<const Tensor<1, dim>>
     force_densities() const;
