@@ -229,23 +229,30 @@ namespace PeriArlequin
                    1;
         n_sites += sites;
       }
+    // A lower bound: a coupled zone holds its overlap too.
     n_sites = std::min(n_sites, n_domain_sites);
     // About 200 bytes a particle and 4.4 a bond of its family: 0.97 KB a particle was
-    // measured in 3D at m = 3 (doc/pd_kernel.md); the bond lists take more.
+    // measured in 3D at m = 3 (doc/pd_kernel.md); the bond lists take more. The ranks that
+    // share this node share its memory.
     const double bytes   = n_sites * (200. + 4.4 * family);
     const double n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    MPI_Comm     node;
+    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    const double ranks_on_node = Utilities::MPI::n_mpi_processes(node);
+    MPI_Comm_free(&node);
     const double node_bytes =
       static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-    if (node_bytes > 0 && bytes / n_ranks > node_bytes)
+    if (node_bytes > 0 && bytes / n_ranks * ranks_on_node > node_bytes)
       throw_invalid_parameter("Peridynamics/Lattice spacing",
                               dx,
                               "a spacing whose zone fits in memory: 'Peridynamics/Region' "
                               "would hold about " +
                                 as_text(n_sites) + " particles with " + as_text(family) +
                                 " bonds each, about " + as_text(bytes / 1e9) + " GB, or " +
-                                as_text(bytes / n_ranks / 1e9) + " GB on each of " +
-                                as_text(n_ranks) + " rank(s), where this node has " +
-                                as_text(node_bytes / 1e9) + " GB");
+                                as_text(bytes / n_ranks * ranks_on_node / 1e9) + " GB on the " +
+                                as_text(ranks_on_node) + " of " + as_text(n_ranks) +
+                                " rank(s) on this node, which has " + as_text(node_bytes / 1e9) +
+                                " GB");
   }
 
   template class PDZone<2>;

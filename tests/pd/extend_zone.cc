@@ -122,8 +122,11 @@ extend_zone()
   // Before any new force evaluation (which would break the bonds across the jump again).
   check(title + "broken bond ends kept", pd.n_global_broken_bonds(), broken_in_a, 0);
   for (const unsigned int i : added)
-    std::tie(pd.get_state().displacements()[i], pd.get_state().velocities()[i]) =
-      initial_state(pd.reference_positions()[i]);
+    {
+      const auto [displacement, velocity] = initial_state(pd.reference_positions()[i]);
+      pd.set_displacement(i, displacement);
+      pd.set_velocity_and_acceleration(i, velocity, pd.get_state().accelerations()[i]);
+    }
   pd.update_ghost_displacements();
   pd.compute_forces(0.);
   pd.compute_accelerations(0.);
