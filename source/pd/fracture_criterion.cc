@@ -84,7 +84,7 @@ namespace PeriArlequin
   {
     model->compute_pair_energies(bonds.families(), bonds.displacements(), scalars, pair_energy);
     bonds.for_each_intact([&](const typename BreakableBonds<dim>::Bond &bond) {
-      if (pair_energy[bond.index] >= critical_energy_ && bond.extension > 0)
+      if (pair_energy[bond.index] >= critical_energy_ && bond.extension() > 0)
         bonds.break_bond(bond);
     });
   }

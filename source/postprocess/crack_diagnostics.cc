@@ -16,9 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
-#include <queue>
 #include <sstream>
-#include <unordered_map>
 
 namespace PeriArlequin
 {

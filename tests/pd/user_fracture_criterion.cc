@@ -38,7 +38,7 @@ namespace UserCriteria
     break_bonds(PeriArlequin::BreakableBonds<dim> &bonds, ArrayView<const double>) const override
     {
       bonds.for_each_intact([&](const auto &bond) {
-        if (bond.extension > critical_extension)
+        if (bond.extension() > critical_extension)
           bonds.break_bond(bond);
       });
     }

@@ -36,14 +36,19 @@ namespace PeriArlequin
       std::size_t index;
       /** Reference vector xi (particle to neighbour), length |xi| and V_J v_IJ. */
       const typename BondFamilies<dim>::StencilEntry &reference;
-      /** e = |xi + eta| - |xi| [m]. */
-      double extension;
+      /** The displacements of the view (owned and ghost particles). */
+      ArrayView<const Tensor<1, dim>> displacement;
 
-      /** e / |xi| [-]. */
+      /**
+       * e = |xi + eta| - |xi| [m], computed when asked (a criterion that decides on something
+       * else first pays for it only where it matters).
+       */
       double
-      stretch() const
+      extension() const
       {
-        return extension / reference.length;
+        return BondFamilies<dim>::extension(reference,
+                                            displacement[neighbor] - displacement[particle])
+          .first;
       }
     };
 
@@ -62,11 +67,11 @@ namespace PeriArlequin
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           if (bonds.state[n] == BondFamilies<dim>::intact)
             {
-              const unsigned int j         = bonds.neighbor(i, n);
-              const auto        &reference = bonds.stencil[bonds.stencil_index[n]];
-              const double       extension =
-                BondFamilies<dim>::extension(reference, displacement[j] - displacement[i]).first;
-              visit(Bond{i, j, n, reference, extension});
+              visit(Bond{i,
+                         bonds.neighbor(i, n),
+                         n,
+                         bonds.stencil[bonds.stencil_index[n]],
+                         displacement});
             }
     }
 
@@ -83,7 +88,7 @@ namespace PeriArlequin
     break_above_stretch(const double limit)
     {
       for_each_intact([&](const Bond &bond) {
-        if (bond.extension > limit * bond.reference.length)
+        if (bond.extension() > limit * bond.reference.length)
           break_bond(bond);
       });
     }
