@@ -5,6 +5,9 @@
  *   periarlequin --check input.prm         parse and validate: set the case up (mesh, zones,
  *                                          coupling, stable step) without running or writing
  *   periarlequin --print-parameters [2|3]  print every parameter with default and documentation
+ *   periarlequin --print-parameters input.prm
+ *                                          print the case as read: every entry's value, the
+ *                                          files it includes resolved (a study's variants)
  */
 #include <periarlequin/simulator.h>
 
@@ -55,14 +58,23 @@ namespace
     simulator.run();
   }
 
+  /** Every parameter with its default and documentation, or, given a file, the case it holds. */
   template <int dim>
   void
-  print_parameters()
+  print_parameters(const std::string &file_name)
   {
     ParameterHandler prm;
     PeriArlequin::Simulator<dim>::declare_parameters(prm);
     prm.set("Dimension", std::to_string(dim));
-    prm.print_parameters(std::cout, ParameterHandler::PRM);
+    if (file_name.empty())
+      prm.print_parameters(std::cout, ParameterHandler::PRM);
+    else
+      {
+        prm.parse_input(file_name);
+        prm.print_parameters(std::cout,
+                             ParameterHandler::OutputStyle(ParameterHandler::PRM |
+                                                           ParameterHandler::Short));
+      }
   }
 
   /**
@@ -89,14 +101,19 @@ main(int argc, char **argv)
       const std::string first = argc > 1 ? argv[1] : "";
       if (first == "--print-parameters")
         {
-          const std::string d = argc > 2 ? argv[2] : "2";
-          if (d != "2" && d != "3")
+          const std::string d       = argc > 2 ? argv[2] : "2";
+          const bool        is_file = d != "2" && d != "3";
+          if (is_file && !std::ifstream(d))
             {
-              std::cerr << "--print-parameters takes the dimension 2 or 3, not '" << d << "'.\n";
+              std::cerr << "--print-parameters takes the dimension 2 or 3 or a parameter file, "
+                           "not '"
+                        << d << "'.\n";
               return 1;
             }
+          const std::string file = is_file ? d : "";
           if (root)
-            (d == "2") ? print_parameters<2>() : print_parameters<3>();
+            ((is_file ? read_dimension(file) : std::stoi(d)) == 2) ? print_parameters<2>(file) :
+                                                                     print_parameters<3>(file);
           return 0;
         }
       const bool        check_only = first == "--check";
@@ -106,7 +123,7 @@ main(int argc, char **argv)
           if (root)
             std::cerr << "Usage: periarlequin input.prm\n"
                          "       periarlequin --check input.prm\n"
-                         "       periarlequin --print-parameters [2|3]\n";
+                         "       periarlequin --print-parameters [2|3 | input.prm]\n";
           return 1;
         }
       if (!std::ifstream(file))

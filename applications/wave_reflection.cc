@@ -1,6 +1,6 @@
 // periarlequin-wave-reflection: the reflection and transmission of a wave packet at an
 // Arlequin overlap (PeriArlequin::WaveReflection), for the absorption study
-// (scripts/wave_reflection_study.sh). Reads the subsection "Wave reflection" of a parameter
+// (studies/wave_coupling/run_reflection.sh). Reads the subsection "Wave reflection" of a parameter
 // file and prints one CSV row: wavelength / h, h / dx, overlap cells, R, T, time [s].
 
 #include <periarlequin/postprocess/wave_reflection.h>

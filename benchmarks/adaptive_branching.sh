@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Cost of the adaptive PD zone on the crack-branching case of doc/crack_branching.md (glass
+# Cost of the adaptive PD zone on the crack-branching case of studies/crack_branching/README.md (glass
 # plate 100 x 120 mm, lattice 0.3125 mm, 43 us): pure PD (pd_120), the best fixed PD strip
 # (coupled8_120_narrow, |y - 60| <= 10 mm chosen from the pure-PD crack path) and the
-# adaptive zone grown from the notch (adaptive8_120), made by scripts/crack_branching.sh, one
+# adaptive zone grown from the notch (adaptive8_120), made by studies/crack_branching/run.sh, one
 # after the other, REPEATS times (3) on 1 rank.
 #
 #   benchmarks/adaptive_branching.sh [build-dir]
@@ -30,7 +30,7 @@ last_column() { # csv, column name
 }
 
 for r in $(seq "$repeats"); do
-  bash "$top/scripts/crack_branching.sh" "$build" "$work/$r" 1 "$runs" > /dev/null 2>&1 || true
+  bash "$top/studies/crack_branching/run.sh" "$build" "$work/$r" 1 "$runs" > /dev/null 2>&1 || true
   t_pd=$(loop_time "$work/$r/pd_120.log")
   t_fixed=$(loop_time "$work/$r/coupled8_120_narrow.log")
   t_adaptive=$(loop_time "$work/$r/adaptive8_120.log")
@@ -59,7 +59,7 @@ echo
 echo "adaptive, 2 ranks: repartitioned after conversions (tolerance 0.1) / not (1e9)"
 for r in $(seq "$repeats"); do
   for tol in 0.1 1e9; do
-    LOAD_IMBALANCE_TOLERANCE=$tol bash "$top/scripts/crack_branching.sh" "$build" "$work/np2_${tol}_$r" 2 \
+    LOAD_IMBALANCE_TOLERANCE=$tol bash "$top/studies/crack_branching/run.sh" "$build" "$work/np2_${tol}_$r" 2 \
       adaptive8_120 > /dev/null 2>&1 || true
   done
   t_on=$(loop_time "$work/np2_0.1_$r/adaptive8_120.log")

@@ -63,18 +63,17 @@ namespace PeriArlequin
     void
     run();
 
-    /**
-     * One step of the time integrator from the current state; with an adaptive PD zone,
-     * every Adaptive PD zone/Check interval steps, grow_pd_zone() after it.
-     */
+    /** One step of the time integrator from the current state, then grow_pd_zone(). */
     void
     advance();
 
     /**
-     * Between steps: the FE cells that the conversion criterion flags become pure PD
-     * (PDZoneGrowth::grow()); the coupling is rebuilt and the accelerations recomputed. Then
-     * rebalance() with Adaptive PD zone/Load imbalance tolerance. Returns the number of cells
-     * converted (over all ranks).
+     * Between steps, with an adaptive PD zone: every Adaptive PD zone/Check interval steps,
+     * and in every step that broke a bond near an FE cell, the FE cells that the conversion
+     * criterion flags or that lie near the new damage become pure PD (PDZoneGrowth::grow());
+     * the coupling is rebuilt and the accelerations recomputed. Then rebalance() with
+     * Adaptive PD zone/Load imbalance tolerance. Returns the number of cells converted (over
+     * all ranks).
      */
     unsigned int
     grow_pd_zone();

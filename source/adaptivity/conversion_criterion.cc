@@ -20,11 +20,10 @@ namespace PeriArlequin
     {
       return Box<dim>{cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
     }
+  } // namespace
 
-    /**
-     * Flag the locally owned FE cells within @p distance of one of @p points (the points of
-     * all ranks). The points are sorted along x so that each cell looks at a slab only.
-     */
+  namespace internal
+  {
     template <int dim>
     void
     mark_cells_near(const FEZone<dim>       &fe_zone,
@@ -54,7 +53,6 @@ namespace PeriArlequin
         }
     }
 
-    /** Gather the points of all ranks into one list. */
     template <int dim>
     std::vector<Point<dim>>
     gather_points(const std::vector<Point<dim>> &local, const MPI_Comm communicator)
@@ -64,7 +62,16 @@ namespace PeriArlequin
         all.insert(all.end(), part.begin(), part.end());
       return all;
     }
-  } // namespace
+
+    template void
+    mark_cells_near(const FEZone<2> &, std::vector<Point<2>> &, const double, std::vector<bool> &);
+    template void
+    mark_cells_near(const FEZone<3> &, std::vector<Point<3>> &, const double, std::vector<bool> &);
+    template std::vector<Point<2>>
+    gather_points(const std::vector<Point<2>> &, const MPI_Comm);
+    template std::vector<Point<3>>
+    gather_points(const std::vector<Point<3>> &, const MPI_Comm);
+  } // namespace internal
 
   template <int dim>
   void
@@ -73,7 +80,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ConversionCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &)
+  ConversionCriterion<dim>::initialize(const FEZone<dim> &,
+                                       const PDZone<dim> &,
+                                       const GrowthContext &)
   {}
 
   template <int dim>
@@ -83,9 +92,12 @@ namespace PeriArlequin
     entries.add("Distance",
                 distance,
                 Patterns::Double(0),
-                "FE cells closer than this to a damaged particle become PD. It must exceed two "
-                "bond reaches, 2 (delta + dx/2), plus the distance a crack runs between two "
-                "checks (Adaptive PD zone/Check interval) [m].");
+                "FE cells closer than this to a damaged particle become PD. 0 (the default): "
+                "automatic, the trigger distance (two bond reaches, 2 (delta + dx/2), plus the "
+                "distance a longitudinal wave runs in a step) plus the distance a crack can "
+                "run between two checks at the shear-wave speed (c_s dt Check interval). A "
+                "value given must reach the trigger distance; a smaller margin over it makes "
+                "growths more frequent, a larger one the zone larger [m].");
     entries.add("Damage threshold",
                 damage_threshold,
                 Patterns::Double(0, 1),
@@ -109,19 +121,24 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  DamageProximityCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &pd_zone)
+  DamageProximityCriterion<dim>::initialize(const FEZone<dim> &,
+                                            const PDZone<dim>   &pd_zone,
+                                            const GrowthContext &context)
   {
-    const auto &parameters = pd_zone.get_parameters();
-    AssertThrow(parameters.fracture,
+    AssertThrow(pd_zone.get_parameters().fracture,
                 ExcMessage("Invalid input: parameter 'Adaptive PD zone/Conversion criterion' = "
                            "'damage distance'; allowed: a criterion that needs no damage "
                            "(strain), since 'Peridynamics/Fracture' is off."));
-    const double reach = parameters.horizon() + 0.5 * parameters.lattice_spacing;
-    if (distance <= 2. * reach)
+    if (distance == 0)
+      distance = context.conversion_distance();
+    else if (distance < context.trigger_distance)
       {
         std::ostringstream allowed;
-        allowed << "a distance larger than two bond reaches, 2 (delta + dx/2) = " << 2. * reach
-                << " m: damage closer to the overlap stops a coupled run";
+        allowed << "0 (automatic: " << context.conversion_distance()
+                << " m here) or at least the trigger distance, two bond reaches 2 (delta + "
+                   "dx/2) plus a longitudinal wave's run in a step, "
+                << context.trigger_distance
+                << " m: damage closer to the overlap than two bond reaches stops a coupled run";
         throw_invalid_parameter("Adaptive PD zone/damage distance/Distance",
                                 distance,
                                 allowed.str());
@@ -140,8 +157,8 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < damage.size(); ++i)
       if (damage[i] > damage_threshold)
         damaged.push_back(x[i]);
-    damaged = gather_points(damaged, pd_zone.get_communicator());
-    mark_cells_near(fe_zone, damaged, distance, convert);
+    damaged = internal::gather_points(damaged, pd_zone.get_communicator());
+    internal::mark_cells_near(fe_zone, damaged, distance, convert);
   }
 
   template <int dim>
@@ -181,7 +198,9 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  StrainCriterion<dim>::initialize(const FEZone<dim> &, const PDZone<dim> &pd_zone)
+  StrainCriterion<dim>::initialize(const FEZone<dim> &,
+                                   const PDZone<dim> &pd_zone,
+                                   const GrowthContext &)
   {
     if (strain_threshold > 0)
       return;
@@ -223,9 +242,9 @@ namespace PeriArlequin
     if (buffer > 0)
       {
         // Measured from the flagged cells' centres: half a cell is added to the buffer.
-        strained               = gather_points(strained, pd_zone.get_communicator());
+        strained               = internal::gather_points(strained, pd_zone.get_communicator());
         const double half_cell = 0.5 * dof_handler.begin_active()->diameter() / std::sqrt(dim);
-        mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
+        internal::mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
       }
   }
 

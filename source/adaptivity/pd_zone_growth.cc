@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
@@ -26,7 +27,10 @@ namespace PeriArlequin
       entries.add("Check interval",
                   check_interval,
                   Patterns::Integer(1),
-                  "Ask the criterion every this many steps [-].");
+                  "Ask the criterion every this many steps. Damage near an FE cell grows "
+                  "the zone in the step it appears whatever this is; with the damage distance "
+                  "criterion, the automatic distance grows with it (fewer, larger growths) "
+                  "[-].");
       entries.add("Load imbalance tolerance",
                   imbalance_tolerance,
                   Patterns::Double(0),
@@ -95,9 +99,47 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZoneGrowth<dim>::initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone)
+  PDZoneGrowth<dim>::initialize(const FEZone<dim> &fe_zone,
+                                const PDZone<dim> &pd_zone,
+                                const double       time_step)
   {
-    criterion->initialize(fe_zone, pd_zone);
+    const auto                 &pd       = pd_zone.get_parameters();
+    const Parameters::Material &material = fe_zone.get_material();
+    context.time_step                    = time_step;
+    context.check_interval               = parameters.check_interval;
+    context.trigger_distance             = 2. * (pd.horizon() + 0.5 * pd.lattice_spacing) +
+                               material.longitudinal_wave_speed(dim) * time_step;
+    context.crack_speed_bound = material.shear_wave_speed();
+    criterion->initialize(fe_zone, pd_zone, context);
+  }
+
+  template <int dim>
+  const GrowthContext &
+  PDZoneGrowth<dim>::get_context() const
+  {
+    return context;
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  PDZoneGrowth<dim>::damage_near_fe_cells(const FEZone<dim> &fe_zone,
+                                          const PDZone<dim> &pd_zone) const
+  {
+    const MPI_Comm communicator = pd_zone.get_communicator();
+    const auto    &broke        = pd_zone.particles_with_new_breaks();
+    if (!Utilities::MPI::logical_or(!broke.empty(), communicator))
+      return {};
+    const auto              x = pd_zone.reference_positions();
+    std::vector<Point<dim>> damage;
+    for (const unsigned int i : broke)
+      damage.push_back(x[i]);
+    damage = internal::gather_points(damage, communicator);
+    std::vector<bool> near(fe_zone.get_dof_handler().get_triangulation().n_active_cells(), false);
+    internal::mark_cells_near(fe_zone, damage, context.trigger_distance, near);
+    const bool any = std::find(near.begin(), near.end(), true) != near.end();
+    if (!Utilities::MPI::logical_or(any, communicator))
+      return {};
+    return damage;
   }
 
   template <int dim>
@@ -109,11 +151,15 @@ namespace PeriArlequin
 
   template <int dim>
   std::vector<Box<dim>>
-  PDZoneGrowth<dim>::flagged_boxes(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const
+  PDZoneGrowth<dim>::flagged_boxes(const FEZone<dim>      &fe_zone,
+                                   const PDZone<dim>      &pd_zone,
+                                   std::vector<Point<dim>> new_damage) const
   {
     const auto       &triangulation = fe_zone.get_dof_handler().get_triangulation();
     std::vector<bool> convert(triangulation.n_active_cells(), false);
     criterion->mark_cells(fe_zone, pd_zone, convert);
+    if (!new_damage.empty())
+      internal::mark_cells_near(fe_zone, new_damage, context.conversion_distance(), convert);
     // Each converted cell as its lower and upper corner.
     std::vector<Point<dim>> local_corners;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -133,12 +179,13 @@ namespace PeriArlequin
 
   template <int dim>
   unsigned int
-  PDZoneGrowth<dim>::grow(FEZone<dim>                 &fe_zone,
-                          PDZone<dim>                 &pd_zone,
-                          BlendingField<dim>          &blending,
-                          const std::function<void()> &rebuild_coupling)
+  PDZoneGrowth<dim>::grow(FEZone<dim>                   &fe_zone,
+                          PDZone<dim>                   &pd_zone,
+                          BlendingField<dim>            &blending,
+                          const std::function<void()>   &rebuild_coupling,
+                          const std::vector<Point<dim>> &new_damage)
   {
-    const std::vector<Box<dim>> boxes = flagged_boxes(fe_zone, pd_zone);
+    const std::vector<Box<dim>> boxes = flagged_boxes(fe_zone, pd_zone, new_damage);
     if (boxes.empty())
       return 0;
     const MPI_Comm communicator = pd_zone.get_communicator();

@@ -179,6 +179,12 @@ namespace PeriArlequin
       return std::sqrt((effective_lambda(dim) + 2. * shear_modulus()) / density);
     }
 
+    double
+    Material::shear_wave_speed() const
+    {
+      return std::sqrt(shear_modulus() / density);
+    }
+
     void
     FiniteElements::entries(ParameterEntries &entries)
     {

@@ -23,13 +23,13 @@ namespace PeriArlequin
                 "node of a Cartesian grid of Q1 hats of spacing k h laid from the lower corner "
                 "of the overlap. At k = 2 the constraint leaves the waves of 2 to 4 FE cells, "
                 "which the FE mesh cannot propagate, to the fine-scale damping instead of "
-                "reflecting them (doc/wave_study.md) [FE cells].");
+                "reflecting them (studies/wave_coupling/README.md) [FE cells].");
     entries.add("Multiplier grid offset",
                 offset,
                 Patterns::Double(0, 0.999),
                 "With a spacing k > 1: the grid's nodes start this fraction of the spacing "
                 "before the lower corner of the overlap's PD nodes. The reflection near the "
-                "cut-off of the lambda-mesh depends on it (doc/wave_study.md) [-].");
+                "cut-off of the lambda-mesh depends on it (studies/wave_coupling/README.md) [-].");
   }
 
   template <int dim>

@@ -62,7 +62,7 @@ namespace PeriArlequin
                   "C of eq. 78 [-]. The paper's value is 30; 10 with the default lambda-mesh "
                   "(Coupling/weak/Multiplier spacing = 2) kept the reflection of the whole band "
                   "below 4 % in the measured overlaps of 3 and 5 cells and costs resolved waves "
-                  "less (doc/wave_study.md, also where it does not hold).");
+                  "less (studies/wave_coupling/README.md, also where it does not hold).");
       entries.add("Damping wave speed",
                   damping_wave_speed,
                   Patterns::Double(0),

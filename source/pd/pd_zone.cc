@@ -157,6 +157,7 @@ namespace PeriArlequin
       force_kernel(parameters.force_kernel, *model));
     find_bonds_near_overlap();
     model->initialize(material, bonds);
+    new_breaks.clear();
 
     const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
     state.reinit(n_owned, n_total);
@@ -433,6 +434,13 @@ namespace PeriArlequin
   PDZone<dim>::n_global_broken_bonds() const
   {
     return Utilities::MPI::sum(bonds.n_broken_bond_ends(), communicator);
+  }
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  PDZone<dim>::particles_with_new_breaks() const
+  {
+    return new_breaks;
   }
 
   template <int dim>

@@ -114,6 +114,7 @@ namespace PeriArlequin
           breakable.break_above_stretch(fracture->critical_stretch());
         else
           fracture->break_bonds(breakable, make_array_view(model_scalars));
+        new_breaks       = breakable.particles_with_broken_bonds();
         const bool broke = breakable.n_broken() > 0;
         if (broke)
           bonds.states_changed();

@@ -132,7 +132,7 @@ namespace PeriArlequin
     if (blending)
       coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
     if (zone_growth)
-      zone_growth->initialize(*fe_zone, *pd_zone);
+      zone_growth->initialize(*fe_zone, *pd_zone, dt);
     stable_time_step =
       std::min(stable_time_step,
                pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
@@ -238,6 +238,16 @@ namespace PeriArlequin
         if (pd_zone->get_critical_stretch() > 0)
           pcout << ", critical stretch " << pd_zone->get_critical_stretch();
         pcout << std::endl;
+      }
+    if (zone_growth)
+      {
+        const GrowthContext &growth = zone_growth->get_context();
+        pcout << "  adaptive PD zone: damage within " << growth.trigger_distance
+              << " m of an FE cell grows it in the same step, converting the FE cells within "
+              << growth.conversion_distance() << " m of the new damage (a crack at the shear "
+              << "speed " << growth.crack_speed_bound << " m/s runs "
+              << growth.crack_speed_bound * growth.time_step * growth.check_interval
+              << " m between two checks)" << std::endl;
       }
   }
 

@@ -63,7 +63,7 @@ namespace PeriArlequin
   Simulator<dim>::advance()
   {
     integrator->step();
-    if (zone_growth && zone_growth->due(get_step_number()))
+    if (zone_growth)
       grow_pd_zone();
   }
 
@@ -71,15 +71,25 @@ namespace PeriArlequin
   unsigned int
   Simulator<dim>::grow_pd_zone()
   {
-    TimerOutput::Scope scope(timer, "PD zone growth");
-    const unsigned int n_cells = zone_growth->grow(*fe_zone, *pd_zone, *blending, [this]() {
-      rebuild_coupling();
-      integrator->initialize();
-    });
+    TimerOutput::Scope            scope(timer, "PD zone growth");
+    const std::vector<Point<dim>> new_damage =
+      zone_growth->damage_near_fe_cells(*fe_zone, *pd_zone);
+    if (new_damage.empty() && !zone_growth->due(get_step_number()))
+      return 0;
+    const unsigned int n_cells = zone_growth->grow(
+      *fe_zone,
+      *pd_zone,
+      *blending,
+      [this]() {
+        rebuild_coupling();
+        integrator->initialize();
+      },
+      new_damage);
     if (n_cells == 0)
       return 0;
     if (output_parameters.progress_interval > 0)
-      pcout << "  step " << get_step_number() << ": " << n_cells << " FE cells became PD; now "
+      pcout << "  step " << get_step_number() << ": " << n_cells << " FE cells became PD"
+            << (new_damage.empty() ? "" : " (damage near the overlap)") << "; now "
             << pd_zone->n_global_particles() << " particles, " << fe_zone->n_dofs() << " FE DoFs"
             << std::endl;
     rebalance(zone_growth->imbalance_tolerance());

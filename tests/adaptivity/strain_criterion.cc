@@ -41,7 +41,7 @@ main(int argc, char **argv)
       prm.parse_input_from_string("subsection strain\n  set Strain = " + strain +
                                   "\n  set Buffer = " + buffer + "\nend\n");
       auto criterion = PeriArlequin::ConversionCriterionRegistry<2>::create("strain", prm);
-      criterion->initialize(fe, pd);
+      criterion->initialize(fe, pd, PeriArlequin::GrowthContext());
       std::vector<bool> convert(fe.get_dof_handler().get_triangulation().n_active_cells(), false);
       criterion->mark_cells(fe, pd, convert);
       return Utilities::MPI::sum(std::count(convert.begin(), convert.end(), true), MPI_COMM_WORLD);

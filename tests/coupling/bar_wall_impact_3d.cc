@@ -1,6 +1,6 @@
 // A short steel bar hits a rigid wall in 3D, pure FE and coupled FE-PD-FE (the CI-sized
-// version of section 6.3, doc/bar_impact.md): a bar 40 x 4 x 4 mm (E = 200 GPa, rho = 7823
-// kg/m^3; hexahedra of h = 1 mm) at v0 = 1 m/s, its end x = 40 mm at the wall (Contact/Model
+// version of section 6.3, studies/bar_impact/README.md): a bar 40 x 4 x 4 mm (E = 200 GPa, rho =
+// 7823 kg/m^3; hexahedra of h = 1 mm) at v0 = 1 m/s, its end x = 40 mm at the wall (Contact/Model
 // = rigid wall) at t = 0, dt = 40 ns. Coupled: pure PD for 15 <= x <= 25 mm (dx = 0.5 mm,
 // 8 sites per hexahedron, m = 1.5), overlaps of 3 FE cells on both sides, weak coupling,
 // force blending, fine-scale damping C = 10. Point A = (26.5, 2, 2) mm lies in the overlap
@@ -19,14 +19,14 @@
 //    dispersive, its fronts arrive a step or two earlier).
 //  - The coupled bar leaves slower than the pure-FE one (0.896 against 0.974): the
 //    constraint's velocity projection removes the fine-scale kinetic energy of the fronts
-//    each step, a time-discretisation error (doc/wave_study.md). It must converge: with
-//    dt / 4 the deficit must fall below 0.4 of that at dt (first order: 0.25; measured
-//    0.079 -> 0.022, ratio 0.27).
+//    each step, a time-discretisation error (studies/wave_coupling/README.md). It must converge:
+//    with dt / 4 the deficit must fall below 0.4 of that at dt (first order: 0.25; measured 0.079
+//    -> 0.022, ratio 0.27).
 //  - Point A's v_x history, relative L2 of coupled - pure FE below 0.15 (measured 0.112):
 //    beyond the fronts, which agree, the two discretisations ring differently behind them.
 // nu = 0.3: lateral inertia rings behind the fronts (3D bar waves); point A's history
 // differs from pure FE by less than 0.18 (measured 0.137). The pure-FE history is itself
-// far from converged here: doc/bar_impact.md measures 11 % between 1 mm and 0.5 mm
+// far from converged here: studies/bar_impact/README.md measures 11 % between 1 mm and 0.5 mm
 // hexahedra in the full-size case.
 // On 2 ranks (the .mpirun=2 output): the coupled nu = 0.3 history equals the 1-rank one to
 // 1e-9 of each column's largest value (energies, contact force, x-momentum, point A;

@@ -317,7 +317,7 @@ namespace PeriArlequinTests
                             "cracks\nend\n");
   }
   /**
-   * The mixed-mode case of the paper's section 6.4 (scripts/mixed_mode.sh): a 62.5 mm square
+   * The mixed-mode case of the paper's section 6.4 (studies/mixed_mode/run.sh): a 62.5 mm square
    * (E = 29 GPa, nu = 0.29, rho = 2400, G0 = 36 kJ/m^2, plane strain) with a crack from the
    * middle of its left side to the centre, the crack-tip field on its four sides with
    * K_eff = Kdot t at the phase angle @p psi [deg], Kdot such that G = G0 at @p critical_time,

@@ -9,14 +9,14 @@
 //    theta_c = 2 atan((1 - sqrt(1 + 8 r^2)) / (4 r)) = -53.13 degrees at r = 1, within 11
 //    degrees for both runs: at m = 3 the crack runs along the directions the small stencil
 //    favours, and the lattice's (1, 1) and (1, 2) directions, -45 and -63.4 degrees, bracket
-//    the MTS angle within 10.3 degrees (doc/mixed_mode.md). Measured -58.1 pure PD, -63.3
-//    coupled (the (1, 2) direction); the coupled run picks -56.4 with the FE-node lambda-mesh,
-//    -63.4 with it and overlaps of 4 cells, -62.4 with the default lambda-mesh and 4 cells:
-//    which lattice direction wins is not a property of the coupling.
+//    the MTS angle within 10.3 degrees (studies/mixed_mode/README.md). Measured -58.1 pure PD,
+//    -63.3 coupled (the (1, 2) direction); the coupled run picks -56.4 with the FE-node
+//    lambda-mesh, -63.4 with it and overlaps of 4 cells, -62.4 with the default lambda-mesh and 4
+//    cells: which lattice direction wins is not a property of the coupling.
 //  - The coupling must not move the answer beyond that scatter: the coupled kink within 7.5
 //    degrees of the pure-PD one (the scatter of the PD answer itself at m = 3 is 0 to 7
-//    degrees across phase angles and resolutions, doc/mixed_mode.md; measured 5.1) and its
-//    initiation load G_init / G0 within 0.03 of the pure-PD one (the record interval, 1 us, is
+//    degrees across phase angles and resolutions, studies/mixed_mode/README.md; measured 5.1) and
+//    its initiation load G_init / G0 within 0.03 of the pure-PD one (the record interval, 1 us, is
 //    0.9 % of G; measured 0.568 against 0.578).
 
 #include "coupled_cases.h"

@@ -10,17 +10,17 @@
 //    (up to the domain's size, 21 and 43 horizons here, and the record interval: 10 steps,
 //    1 and 2 us, 0.7 % of G). Asserted: the two G_init / G0 agree within 3 %.
 //  - Against G0: a critical stretch derived from G0 breaks the first bond at the tip later
-//    than LEFM's G = G0 (doc/mixed_mode.md: 1.12-1.20 G0 at m = 3, lower at larger m).
+//    than LEFM's G = G0 (studies/mixed_mode/README.md: 1.12-1.20 G0 at m = 3, lower at larger m).
 //    Asserted: G_init / G0 in [0.9, 1.25], the band the PD model holds at m = 3; the
 //    issue's 10 % is not met at this horizon factor (see the doc).
 //  - The "critical bond energy" criterion on the coarse lattice, run on until the crack has
 //    grown 5 mm: it breaks the first bond at G_init within 10 % of G0 (0.96 G0 measured at
-//    m = 3; it falls to 0.6 G0 at m = 6-8, doc/mixed_mode.md), and the crack dissipates G0
-//    per unit area of new crack: the energy the balance leaves unaccounted for (external
-//    work - kinetic - strain energy drop) between 1 and 5 mm of new crack (broken-bond
-//    measure), divided by that area, within [0.95, 1.15] G0. Measured 1.03-1.07 at
-//    m = 3-8: bonds off the crack plane break too, and the area measure weighs bonds by
-//    their length while the criterion dissipates the same w_c in each.
+//    m = 3; it falls to 0.6 G0 at m = 6-8, studies/mixed_mode/README.md), and the crack dissipates
+//    G0 per unit area of new crack: the energy the balance leaves unaccounted for (external work -
+//    kinetic - strain energy drop) between 1 and 5 mm of new crack (broken-bond measure), divided
+//    by that area, within [0.95, 1.15] G0. Measured 1.03-1.07 at m = 3-8: bonds off the crack plane
+//    break too, and the area measure weighs bonds by their length while the criterion dissipates
+//    the same w_c in each.
 
 #include "coupled_cases.h"
 

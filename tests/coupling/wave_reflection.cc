@@ -9,10 +9,10 @@
 //  - The measurement closes the balance where nothing is meant to be absorbed: lambda = 12 h
 //    (resolved by the mesh), damping off, R + T within 0.01 of 1 (measured 0.991; 0.994
 //    with the FE-node lambda-mesh), and what is missing is the velocity projection's loss,
-//    first order in dt (doc/wave_study.md): at half the step it is at most 0.6 of that at the
-//    step (first order: 0.5; measured 0.53). R and T come from different runs and zones, so
-//    this checks both, and energy blending without damping conserves energy as dt -> 0 (issue
-//    item 5).
+//    first order in dt (studies/wave_coupling/README.md): at half the step it is at most 0.6 of
+//    that at the step (first order: 0.5; measured 0.53). R and T come from different runs and
+//    zones, so this checks both, and energy blending without damping conserves energy as dt -> 0
+//    (issue item 5).
 //  - Resolved by the FE mesh, lambda = 6 h: R <= 1 % (measured 0.047 %) and T >= 0.9
 //    (measured 0.924; the damping takes some of a resolved wave too, as the constraint on the
 //    coarser lambda-mesh holds the PD motion to the FE field only in the mean over a hat).

@@ -19,7 +19,7 @@
 //    and velocity Verlet's energy error is far below 1e-3 at this step.
 // The same on 2 ranks (the .mpirun=2 output): the verdicts are the same. (With nu = 0.3 the
 // strip is no longer a 1D bar: lateral inertia leaves 2 % of the energy in vibrations and
-// the rebound at 0.98 v0; doc/bar_impact.md.)
+// the rebound at 0.98 v0; studies/bar_impact/README.md.)
 
 #include "../tests.h"
 

@@ -8,11 +8,45 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace PeriArlequin
 {
   using namespace dealii;
+
+  /**
+   * What a conversion criterion may need of the growth that asks it, to derive its defaults
+   * from the material and the step.
+   */
+  struct GrowthContext
+  {
+    /** The time step [s]. */
+    double time_step = 0;
+    /** Steps between two regular checks (Adaptive PD zone/Check interval) [-]. */
+    unsigned int check_interval = 1;
+    /**
+     * New damage closer than this to an FE cell converts cells at once, in the step it
+     * appears: two bond reaches plus the distance a longitudinal wave runs in a step [m].
+     */
+    double trigger_distance = 0;
+    /** An upper bound of a crack's speed: the shear-wave speed [m/s]. */
+    double crack_speed_bound = 0;
+
+    /**
+     * The distance to convert around damage: the trigger distance plus how far a crack can
+     * run between two regular checks, c_s dt (Check interval), so that the next growth is
+     * due a check interval later at the soonest. That run is taken at most twice the trigger
+     * distance, so that a long check interval does not convert the whole model (the trigger
+     * keeps the zone ahead of the crack without it) [m].
+     */
+    double
+    conversion_distance() const
+    {
+      return trigger_distance +
+             std::min(crack_speed_bound * time_step * check_interval, 2. * trigger_distance);
+    }
+  };
 
   /**
    * Which FE cells an adaptive PD zone takes next: selected by name in "Adaptive PD
@@ -36,10 +70,12 @@ namespace PeriArlequin
 
     /**
      * Check the parameters against the case once the zones exist (a clear error naming the
-     * parameter if they cannot work with it).
+     * parameter if they cannot work with it); automatic defaults from @p context.
      */
     virtual void
-    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone);
+    initialize(const FEZone<dim>   &fe_zone,
+               const PDZone<dim>   &pd_zone,
+               const GrowthContext &context);
 
     /**
      * Set @p convert[cell->active_cell_index()] for the locally owned cells that should be
@@ -59,13 +95,33 @@ namespace PeriArlequin
   extern template class PluginRegistry<ConversionCriterion<2>>;
   extern template class PluginRegistry<ConversionCriterion<3>>;
 
+  namespace internal
+  {
+    /**
+     * Flag the locally owned FE cells (with DoFs) within @p distance of one of @p points (the
+     * points of all ranks; sorted along x here, so that each cell looks at a slab only).
+     */
+    template <int dim>
+    void
+    mark_cells_near(const FEZone<dim>       &fe_zone,
+                    std::vector<Point<dim>> &points,
+                    const double             distance,
+                    std::vector<bool>       &convert);
+
+    /** The points of all ranks in one list, in rank order (collective). */
+    template <int dim>
+    std::vector<Point<dim>>
+    gather_points(const std::vector<Point<dim>> &local, const MPI_Comm communicator);
+  } // namespace internal
+
   /**
    * Cells within a distance of damage become PD: a cell is flagged if some particle with
    * damage above the threshold lies within "Distance" of it. The PD region then holds the
    * ball of that radius around every damaged particle, so a crack tip stays that far from the
    * overlap as long as it runs less than the margin between two checks. The distance must
-   * exceed two bond reaches, 2 (delta + dx/2): bonds that far from the overlap are the ones
-   * whose breaking stops a coupled run.
+   * reach the growth's trigger distance (two bond reaches, 2 (delta + dx/2), whose breaking
+   * stops a coupled run, plus one step of a wave); by default it is the conversion distance
+   * of GrowthContext, which a crack cannot cross between two checks.
    */
   template <int dim>
   class DamageProximityCriterion : public ConversionCriterion<dim>
@@ -79,7 +135,9 @@ namespace PeriArlequin
     void
     parse_parameters(ParameterHandler &prm) override;
     void
-    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) override;
+    initialize(const FEZone<dim>   &fe_zone,
+               const PDZone<dim>   &pd_zone,
+               const GrowthContext &context) override;
     void
     mark_cells(const FEZone<dim> &fe_zone,
                const PDZone<dim> &pd_zone,
@@ -109,7 +167,9 @@ namespace PeriArlequin
     void
     parse_parameters(ParameterHandler &prm) override;
     void
-    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) override;
+    initialize(const FEZone<dim>   &fe_zone,
+               const PDZone<dim>   &pd_zone,
+               const GrowthContext &context) override;
     void
     mark_cells(const FEZone<dim> &fe_zone,
                const PDZone<dim> &pd_zone,

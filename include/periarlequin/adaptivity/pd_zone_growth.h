@@ -43,6 +43,12 @@ namespace PeriArlequin
    * rebuilds the coupling and the accelerations; the free particles that gained mass take the
    * momentum the two quadratures of the blended mass disagree on, so that a conversion
    * conserves linear momentum. Existing particles keep their state and broken bonds.
+   *
+   * A crack cannot outrun the zone: besides the criterion's checks every Check interval
+   * steps, every step in which a bond breaks within the trigger distance of an FE cell
+   * (two bond reaches plus a wave's run in a step) converts the cells around the new damage
+   * at once, out to the conversion distance (GrowthContext). The overlap stop of the PD zone
+   * stays as the last guard.
    */
   template <int dim>
   class PDZoneGrowth
@@ -67,24 +73,42 @@ namespace PeriArlequin
                  std::unique_ptr<ConversionCriterion<dim>> criterion,
                  const Parameters::Peridynamics<dim>      &pd_parameters);
 
-    /** Check the criterion against the zones once they exist. */
+    /**
+     * The trigger distance and the criterion's automatic defaults from the material and the
+     * time step @p time_step; check the criterion against the zones.
+     */
     void
-    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone);
+    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone, const double time_step);
 
     /** Is the criterion asked after step @p step (every Check interval steps)? */
     bool
     due(const unsigned int step) const;
 
     /**
-     * Convert the cells the criterion flags (collective). @p rebuild_coupling rebuilds what
+     * The particles (of all ranks) whose bonds broke in the last step, if one of them lies
+     * within the trigger distance of an FE cell, else nothing: a growth is needed now,
+     * whatever the check interval (collective; costs one reduction in a step that broke no
+     * bond near an FE cell).
+     */
+    std::vector<Point<dim>>
+    damage_near_fe_cells(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const;
+
+    /**
+     * Convert the cells the criterion flags and the FE cells within the conversion distance
+     * (GrowthContext) of @p new_damage (collective). @p rebuild_coupling rebuilds what
      * depends on the zones (contact, coupling) and the accelerations of the current state.
      * Returns the number of cells converted over all ranks (0: nothing changed).
      */
     unsigned int
-    grow(FEZone<dim>                 &fe_zone,
-         PDZone<dim>                 &pd_zone,
-         BlendingField<dim>          &blending,
-         const std::function<void()> &rebuild_coupling);
+    grow(FEZone<dim>                   &fe_zone,
+         PDZone<dim>                   &pd_zone,
+         BlendingField<dim>            &blending,
+         const std::function<void()>   &rebuild_coupling,
+         const std::vector<Point<dim>> &new_damage = {});
+
+    /** The distances and speeds the growth works with (set by initialize()). */
+    const GrowthContext &
+    get_context() const;
 
     /** Cells converted since the start, over all ranks. */
     unsigned int
@@ -103,16 +127,22 @@ namespace PeriArlequin
     imbalance_tolerance() const;
 
   private:
-    /** The flagged cells that are FE now, as boxes, gathered from all ranks. */
+    /**
+     * The cells that are FE now and flagged by the criterion or near @p new_damage, as boxes,
+     * gathered from all ranks.
+     */
     std::vector<Box<dim>>
-    flagged_boxes(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const;
+    flagged_boxes(const FEZone<dim>      &fe_zone,
+                  const PDZone<dim>      &pd_zone,
+                  std::vector<Point<dim>> new_damage) const;
 
     const Parameters::AdaptivePDZone<dim>     parameters;
     std::unique_ptr<ConversionCriterion<dim>> criterion;
     /** The particles the grown zone holds: within this distance of its PD part [m]. */
-    const double particle_reach;
-    unsigned int converted_cells   = 0;
-    double       conversion_energy = 0.;
+    const double  particle_reach;
+    GrowthContext context;
+    unsigned int  converted_cells   = 0;
+    double        conversion_energy = 0.;
   };
 } // namespace PeriArlequin
 

@@ -241,6 +241,12 @@ namespace PeriArlequin
       /** Speed of plane longitudinal waves, sqrt((lambda_eff + 2 mu) / rho) [m/s]. */
       double
       longitudinal_wave_speed(const unsigned int dim) const;
+      /**
+       * Speed of shear waves, sqrt(mu / rho) [m/s]: above the Rayleigh speed, the limit of a
+       * running crack.
+       */
+      double
+      shear_wave_speed() const;
     };
 
     /** The finite-element discretisation of the classical zone. */

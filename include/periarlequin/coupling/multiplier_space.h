@@ -120,7 +120,7 @@ namespace PeriArlequin
    * grid node whose hat reaches one of them. With H = 2 h_FE the constraint is blind to the waves
    * of 2 to 4 FE cells that the FE mesh carries but cannot propagate: in the overlap they are fine
    * scale, left to the damping, instead of being tied to an FE field that sends them back
-   * (doc/wave_study.md).
+   * (studies/wave_coupling/README.md).
    */
   template <int dim>
   class GridMultiplierSpace : public MultiplierSpace<dim>

@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace PeriArlequin
 {
@@ -80,6 +81,8 @@ namespace PeriArlequin
     break_bond(const Bond &bond)
     {
       bonds.state[bond.index] = BondFamilies<dim>::broken;
+      if (broken_at.empty() || broken_at.back() != bond.particle)
+        broken_at.push_back(bond.particle);
       ++n_broken_here;
     }
 
@@ -100,6 +103,16 @@ namespace PeriArlequin
       return n_broken_here;
     }
 
+    /**
+     * The owned particles that stored a bond broken through this view, in the order of the
+     * breaks (consecutive repeats merged).
+     */
+    const std::vector<unsigned int> &
+    particles_with_broken_bonds() const
+    {
+      return broken_at;
+    }
+
     /** The bond families, read only (for models that split the energy into bonds). */
     const BondFamilies<dim> &
     families() const
@@ -118,6 +131,7 @@ namespace PeriArlequin
     BondFamilies<dim>              &bonds;
     ArrayView<const Tensor<1, dim>> displacement;
     std::size_t                     n_broken_here = 0;
+    std::vector<unsigned int>       broken_at;
   };
 } // namespace PeriArlequin
 

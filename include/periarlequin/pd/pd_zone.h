@@ -172,6 +172,12 @@ namespace PeriArlequin
     /** Broken bonds counted from both ends. */
     std::size_t
     n_global_broken_bonds() const;
+    /**
+     * The owned particles that stored a bond broken in the last force computation (local
+     * numbers): where damage is new, for the checks of an adaptive zone.
+     */
+    const std::vector<unsigned int> &
+    particles_with_new_breaks() const;
     /** The fracture criterion's critical stretch (0 without fracture). */
     double
     get_critical_stretch() const;
@@ -504,6 +510,8 @@ namespace PeriArlequin
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
+    /** See particles_with_new_breaks(). */
+    std::vector<unsigned int> new_breaks;
     /** Handle of the particle state attached to the cells during a repartition. */
     unsigned int state_handle = numbers::invalid_unsigned_int;
     /** Scratch of load_density(), called per particle and step: no allocation there. */

@@ -1,7 +1,7 @@
 #!/bin/bash
 # Results table of the section 6.1 study (markdown), from the output directories of a pure-PD
 # reference run and of coupled runs at the same time step and PD lattice:
-#   scripts/wave_table.sh <reference dir> <label>=<run dir> [<label>=<run dir> ...]
+#   studies/wave_coupling/table.sh <reference dir> <label>=<run dir> [<label>=<run dir> ...]
 # Columns, at the end time t_end of the reference unless said:
 #   E_pure/E0      energy left in the pure PD zone (pure_pd_energy) over its initial value,
 #                  also at the paper's end time T_PAPER (default 2.4e-4 s);

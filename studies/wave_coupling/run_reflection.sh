@@ -1,11 +1,11 @@
 #!/bin/bash
-# The reflection study of the overlap (doc/wave_study.md, "Reflection against wavelength"):
+# The reflection study of the overlap (studies/wave_coupling/README.md, "Reflection against wavelength"):
 # R(lambda / h) and T(lambda / h) of a wave packet sent from the pure PD zone into the
 # overlap (PeriArlequin::WaveReflection, build/periarlequin-wave-reflection), for FE/PD size
 # ratios, overlap widths, couplings and damping settings. Writes <work>/reflection.csv
 # (configuration, lambda / h, h / dx, overlap cells, R, T, time) and, with gnuplot (Debian
 # gnuplot-nox), <work>/reflection.png:
-#   scripts/wave_reflection_study.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
+#   studies/wave_coupling/run_reflection.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups>: defaults (weak coupling, defaults: lambda-mesh of 2 FE cells, C = 10; ratios 4
 # and 8, overlaps 3 and 5 cells), from_fe (the packet coming from the FE side; ratios 4 and
 # 8, overlap 5), fe_nodes (the paper's lambda-mesh, the FE nodes, and C = 30; ratios 4 and 8,
@@ -91,7 +91,7 @@ EOF2
   done
 } | tee reflection.csv
 
-# The table of doc/wave_study.md: R and T in percent, a row per configuration.
+# The table of studies/wave_coupling/README.md: R and T in percent, a row per configuration.
 awk -F, 'NR > 1 && NF == 7 {
     if (!($1 in seen)) { seen[$1] = 1; names[++n] = $1 }
     if (!($2 in seen_wl)) { seen_wl[$2] = 1; wl[++m] = $2 }

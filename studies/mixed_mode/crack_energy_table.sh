@@ -1,5 +1,5 @@
 #!/bin/bash
-# The fracture-energy table of doc/mixed_mode.md from runs of scripts/mixed_mode.sh (in its
+# The fracture-energy table of studies/mixed_mode/README.md from runs of studies/mixed_mode/run.sh (in its
 # work directory): for each run <name> (files <name>.prm and <name>/solution_energy.csv,
 # energies and cracks postprocessors, a crack-tip field ramped so that G = G0 = 36 kJ/m^2 at
 # T_c) the fracture criterion, the horizon factor, G at initiation and when the new crack
@@ -7,7 +7,7 @@
 # unit area of new crack between 1 and 5 mm (in brackets: 0.1 to 1 mm), over G0: the energy
 # the balance leaves unaccounted for, the drop of total_energy = kinetic + strain - external
 # work.
-#   scripts/crack_energy_table.sh <name> ...
+#   studies/mixed_mode/crack_energy_table.sh <name> ...
 set -euo pipefail
 printf '| run | criterion | m | G_init / G0 | G at 1 mm / G0 | G at 5 mm / G0 | dissipated / G0 |\n'
 printf '|---|---|---|---|---|---|---|\n'

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The table of doc/crack_branching.md from the output of scripts/crack_branching.sh (run in
+# The table of studies/crack_branching/README.md from the output of studies/crack_branching/run.sh (run in
 # its work directory): for each run <name> (files <name>.log and <name>/solution_energy.csv)
 # the particle and FE DoF counts, wall time of the time loop and the timer shares, crack
 # initiation (crack extension past one horizon, 1 mm), branching (first record with two tips:
@@ -7,7 +7,7 @@
 # record before branching to each tip 4 us after branching), the x of the leading tip at
 # 20-43 us, the
 # broken-bond energy, and where a run stopped early, why.
-#   scripts/crack_branching_table.sh <name> ...
+#   studies/crack_branching/table.sh <name> ...
 set -euo pipefail
 printf '| run | particles | FE DoFs | loop [s] | PD forces | coupling | FE forces | output + diagnostics | initiation [us] | branching [us] | branching x [mm] | branch angles [deg] | leading tip x at 20/25/30/35/40/43 us [mm] | broken-bond energy [J/m] | end |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'

@@ -1,35 +1,47 @@
 #!/bin/bash
-# The section 6.3 study of doc/bar_impact.md: a steel bar 100 x 10 x 10 mm at 1 m/s hits a
+# The section 6.3 study of this folder's README: a steel bar 100 x 10 x 10 mm at 1 m/s hits a
 # clamped plate, pure FE and coupled FE-PD-FE (parameter_files/bar_impact_3d_{fe,coupled}.prm,
 # hexahedra of 1 mm, PD lattice 0.5 mm), and with the fine group the same with every cell
 # and lattice spacing halved (dt 20 ns for FE, 10 ns for the coupled run). Prints the table
-# of doc/bar_impact.md and, with gnuplot (Debian gnuplot-nox), draws
+# of the README and, with gnuplot (Debian gnuplot-nox), draws
 # <work>/bar_impact_point_a.png (point A's velocity against time, fig. 16 of the paper) and
 # <work>/bar_impact_axis.png (the velocity along the bar's axis at four times, fig. 15):
-#   scripts/bar_impact.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
+#   studies/bar_impact/run.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups>: paper (default), fine. About 1.5 minutes for paper, 25 minutes for fine, on one core.
 set -euo pipefail
-usage="usage: bar_impact.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
+usage="usage: studies/bar_impact/run.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
 groups=${4:-paper}
-here=$(cd "$(dirname "$0")/.." && pwd)
+here=$(cd "$(dirname "$0")/../.." && pwd)
 mkdir -p "$work"
 cd "$work"
 
 run() { # run <parameter file> <log>
   mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$1" > "$2" 2>&1
 }
-# refine <parameter file> <output directory> <time step> <energy interval>: every length halved
+# refine <shipped case> <output directory> <time step> <energy interval>: the case with every
+# length halved (one more refinement of its mesh, half its lattice spacing if it has PD)
 refine() {
-  sed -e "s|set Mesh file          = ../|set Mesh file          = $here/|" \
-      -e "s|set Global refinements = 1|set Global refinements = 2|" \
-      -e "s|set Lattice spacing = 5e-4|set Lattice spacing = 2.5e-4|" \
-      -e "s|set Time step = 4e-8|set Time step = $3|" \
-      -e "s|set Energy interval   = 2|set Energy interval   = $4|" \
-      -e "s|set Output interval   = 200|set Output interval   = 0|" \
-      -e "s|set Directory         = .*|set Directory         = $2|" "$1"
+  echo "include $here/parameter_files/$1.prm"
+  echo "subsection Geometry"
+  echo "  set Mesh file          = $here/examples/bar_impact/bar_and_plate.msh"
+  echo "  set Global refinements = 2"
+  echo "end"
+  if grep -q "^subsection Peridynamics" "$here/parameter_files/$1.prm"; then
+    echo "subsection Peridynamics"
+    echo "  set Lattice spacing = 2.5e-4"
+    echo "end"
+  fi
+  echo "subsection Time"
+  echo "  set Time step = $3"
+  echo "end"
+  echo "subsection Output"
+  echo "  set Directory       = $2"
+  echo "  set Output interval = 0"
+  echo "  set Energy interval = $4"
+  echo "end"
 }
 
 for group in $groups; do
@@ -38,8 +50,8 @@ for group in $groups; do
       run "$here/parameter_files/bar_impact_3d_fe.prm" fe.log
       run "$here/parameter_files/bar_impact_3d_coupled.prm" coupled.log ;;
     fine)
-      refine "$here/parameter_files/bar_impact_3d_fe.prm" output-bar-impact-3d-fe-fine 2e-8 4 > fe_fine.prm
-      refine "$here/parameter_files/bar_impact_3d_coupled.prm" output-bar-impact-3d-coupled-fine 1e-8 8 > coupled_fine.prm
+      refine bar_impact_3d_fe output-bar-impact-3d-fe-fine 2e-8 4 > fe_fine.prm
+      refine bar_impact_3d_coupled output-bar-impact-3d-coupled-fine 1e-8 8 > coupled_fine.prm
       run fe_fine.prm fe_fine.log
       run coupled_fine.prm coupled_fine.log ;;
     *) echo "unknown group $group" >&2; exit 1 ;;

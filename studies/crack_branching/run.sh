@@ -1,57 +1,44 @@
 #!/bin/bash
-# The crack-branching study of doc/crack_branching.md (section 6.2 of the paper, on the
-# peridynamic branching benchmark): a soda-lime glass plate (E = 72 GPa, nu = 0.22,
-# rho = 2440 kg/m^3, G0 = 3.8 J/m^2, plane stress) with a 50 mm notch along its mid-line from
-# the left edge, a traction of 2 MPa applied suddenly on the top and bottom edges, horizon
-# 1 mm (lattice 0.3125 mm, m = 3.2), run to 43 us. Runs pure PD and coupled (PD strip around
+# The crack-branching study of this folder's README (section 6.2 of the paper, on the
+# peridynamic branching benchmark): the glass plate of plate.prm. Runs pure PD and coupled (PD strip around
 # the crack line, overlaps of 5 FE cells above and below, FE beyond, weak coupling, force
 # blending, fine-scale damping) at FE/PD size ratios 8 and 16, on the 100 x 40 mm plate and on
 # the 100 x 120 mm plate, and with an adaptive PD zone that starts around the notch and grows
-# with the crack (doc/adaptive_zone.md), then prints the table and draws the figures:
-#   scripts/crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]
+# with the crack (../adaptive_zone), then prints the table and draws the figures:
+#   studies/crack_branching/run.sh <build directory> <work directory> [<mpi ranks> [<runs>]]
 # <runs>: a space-separated list of run names to make (default: all). The adaptive runs
 # repartition on several ranks as 'Adaptive PD zone/Load imbalance tolerance' says, 0.1 or
 # the environment's LOAD_IMBALANCE_TOLERANCE.
-# Figures (scripts/plot_cracks.sh) and the table go to <work directory>; takes some minutes.
+# Every run is <work directory>/<name>.prm, a file that includes plate.prm and sets what the
+# run changes. Figures (scripts/plot_cracks.sh) and the table go to <work directory>; takes
+# some minutes.
 set -euo pipefail
-usage="usage: crack_branching.sh <build directory> <work directory> [<mpi ranks> [<runs>]]"
+usage="usage: studies/crack_branching/run.sh <build directory> <work directory> [<mpi ranks> [<runs>]]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
 only=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
+scripts=$(cd "$here/../../scripts" && pwd)
 mkdir -p "$work"
 cd "$work"
-source "$here/study_lib.sh"
+source "$scripts/study_lib.sh"
 
-dx=3.125e-4
-# case <name> <height [m]> <PD strip half width [m], 0: pure PD> <FE cell [m]> <overlap cells>
-#      [<damage distance [m]>: adaptive PD zone, starting as the strip along the notch]
+# case_file <name> <height [m]> <PD strip half width [m], 0: pure PD> <FE cell [m]> <overlap cells>
+#           [<damage distance [m]>: adaptive PD zone, starting as the strip along the notch]
+# writes the run's parameters: plate.prm and what this run changes.
 case_file() {
   local name=$1 height=$2 half=$3 cell=$4 layers=$5 distance=${6:-}
-  local mid nx ny
+  local mid
   mid=$(calc "$height / 2")
-  nx=$(calc "int(0.1 / $cell + 0.5)")
-  ny=$(calc "int($height / $cell + 0.5)")
   cat << EOF
-set Dimension = 2
+include $here/plate.prm
 subsection Geometry
-  set Lower corner = 0, 0
   set Upper corner = 0.1, $height
-  set Subdivisions = $nx, $ny
-end
-subsection Material
-  set Young's modulus       = 72e9
-  set Poisson's ratio       = 0.22
-  set Density               = 2440
-  set Two-dimensional model = plane stress
+  set Subdivisions = $(calc "int(0.1 / $cell + 0.5)"), $(calc "int($height / $cell + 0.5)")
 end
 subsection Peridynamics
-  set Lattice spacing              = $dx
-  set Horizon factor               = 3.2
-  set Fracture                     = true
-  set Critical energy release rate = 3.8
-  set Pre-cracks                   = 0, $mid : 0.05, $mid
+  set Pre-cracks = 0, $mid : 0.05, $mid
 EOF
   if [ "$half" = 0 ]; then
     echo "  set Region = 0, 0 : 0.1, $height"
@@ -91,33 +78,8 @@ end
 EOF
   fi
   cat << EOF
-subsection Boundary conditions
-  subsection Boundary 2
-    set Type = traction
-    subsection Function
-      set Function expression = 0; -2e6
-    end
-  end
-  subsection Boundary 3
-    set Type = traction
-    subsection Function
-      set Function expression = 0; 2e6
-    end
-  end
-end
-subsection Time
-  set Time step = 2.5e-8
-  set End time  = 4.3e-5
-end
 subsection Output
-  set Directory         = $name
-  set Output interval   = 430
-  set Energy interval   = 20
-  set Progress interval = 30
-  set Print timing summary = true
-end
-subsection Postprocess
-  set List of postprocessors = energies, constraint residuals, cracks, zone sizes
+  set Directory = $name
 end
 EOF
 }
@@ -125,7 +87,7 @@ EOF
 run() {
   [ -z "$only" ] || [[ " $only " == *" $1 "* ]] || return 0
   run_case "$@"
-  "$here/plot_cracks.sh" "$1" "${reference:-}" > /dev/null || true
+  "$scripts/plot_cracks.sh" "$1" "${reference:-}" > /dev/null || true
 }
 
 # 100 x 40 mm: the branches spread to y = 20 +- 13 mm, so the PD strip must nearly fill the
@@ -162,4 +124,4 @@ for name in pd_40 coupled8_40 pd_120 coupled8_120 coupled16_120 coupled8_120_nar
   adaptive8_120_band3; do
   [ -f "$name.log" ] && made+=("$name")
 done
-"$here/crack_branching_table.sh" "${made[@]}"
+"$here/table.sh" "${made[@]}"

@@ -1,11 +1,11 @@
 #!/bin/bash
-# The table of doc/mixed_mode.md from the output of scripts/mixed_mode.sh (run in its work
+# The table of studies/mixed_mode/README.md from the output of studies/mixed_mode/run.sh (run in its work
 # directory): for each run <name> (files <name>.prm, <name>.log, <name>/solution_energy.csv)
 # the phase angle, K_II / K_I, the maximum-circumferential-stress kink angle
 # theta_c = 2 atan((1 - sqrt(1 + 8 r^2)) / (4 r)), the measured kink angle (last record, with
 # the number of particles fitted), G at initiation (first new broken bond near the tip) and at
 # growth by one horizon over G0 = 36 kJ/m^2, particles and wall time of the time loop.
-#   scripts/mixed_mode_table.sh <name> ...
+#   studies/mixed_mode/table.sh <name> ...
 set -euo pipefail
 printf '| run | psi [deg] | K_II/K_I | MTS angle [deg] | kink angle [deg] | fitted particles | G_init / G0 | G_growth / G0 | growth at [us] | particles | loop [s] | end |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n'

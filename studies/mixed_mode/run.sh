@@ -1,31 +1,32 @@
 #!/bin/bash
-# The mixed-mode kinking study of doc/mixed_mode.md (section 6.4 of the paper): a 6.25 cm
-# square (E = 29 GPa, nu = 0.29, rho = 2400 kg/m^3, G0 = 36 kJ/m^2) with a crack from the middle
-# of its left side to the centre, loaded by the crack-tip field of eq. 82 on its four sides
-# with K_eff = Kdot t at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
+# The mixed-mode kinking study of this folder's README (section 6.4 of the paper): the square
+# of square.prm, loaded by the crack-tip field of eq. 82 on its four sides with K_eff = Kdot t
+# at phase angle psi, Kdot set so that G reaches G0 at the time T_c.
 # Pure PD, coupled (PD box around the crack and the tip, overlaps of 2 FE cells, FE
 # beyond, weak coupling, force blending, damping constant 10: the paper's 30 over-damps the
 # narrow overlaps at this time step) and adaptive (PD on the crack only, growing with it,
-# doc/adaptive_zone.md). Prints the table of doc/mixed_mode.md and draws each
+# ../adaptive_zone). Prints the table of the README and draws each
 # run's final damage map (scripts/plot_cracks.sh, gnuplot-nox):
-#   scripts/mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
+#   studies/mixed_mode/run.sh <build directory> <work directory> [<mpi ranks>] [<groups>]
 # <groups> (default: all) names the groups to run: angles, angles_m6, ramp, convergence,
 # coupled, m6_coupled, m6_coupled_angles, adaptive, bond_energy, stress. Takes about three hours for all
-# on one core.
+# on one core. Every run is <work directory>/<name>.prm, a file that includes square.prm and
+# sets what the run changes.
 set -euo pipefail
-usage="usage: mixed_mode.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
+usage="usage: studies/mixed_mode/run.sh <build directory> <work directory> [<mpi ranks>] [<groups>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
 groups=${4:-angles angles_m6 ramp convergence coupled m6_coupled m6_coupled_angles adaptive bond_energy stress}
 here=$(cd "$(dirname "$0")" && pwd)
+scripts=$(cd "$here/../../scripts" && pwd)
 mkdir -p "$work"
 cd "$work"
-
-source "$here/study_lib.sh"
+source "$scripts/study_lib.sh"
 
 # case_file <name> <plane: strain|stress> <psi [deg]> <T_c [s]> <lattice sites per side>
 #           <horizon factor> <FE cells per side> <coupled: 0|1|2 (adaptive)> [<fracture criterion>]
+# writes the run's parameters: square.prm and what this run changes.
 case_file() {
   local name=$1 plane=$2 psi=$3 tc=$4 n=$5 m=$6 cells=$7 coupled=$8 criterion=${9:-critical stretch}
   local L=0.03125 dx c kc kdot end
@@ -36,30 +37,19 @@ case_file() {
   kdot=$(calc "$kc / $tc")
   end=$(calc "1.6 * $tc")
   cat << EOF
-set Dimension = 2
+include $here/square.prm
 subsection Geometry
-  set Lower corner = -$L, -$L
-  set Upper corner = $L, $L
   set Subdivisions = $cells, $cells
 end
 subsection Material
-  set Young's modulus       = 29e9
-  set Poisson's ratio       = 0.29
-  set Density               = 2400
   set Two-dimensional model = plane $plane
 end
 subsection Peridynamics
-  set Lattice spacing              = $dx
-  set Horizon factor               = $m
-  set Fracture                     = true
-  set Fracture criterion           = $criterion
-  set Critical energy release rate = 36e3
-  set Pre-cracks                   = -$L, 0 : 0, 0
+  set Lattice spacing    = $dx
+  set Horizon factor     = $m
+  set Fracture criterion = $criterion
 EOF
-  if [ "$coupled" = 0 ]; then
-    echo "  set Region = -$L, -$L : $L, $L"
-    echo "end"
-  elif [ "$coupled" = 2 ]; then
+  if [ "$coupled" = 2 ]; then
     # Adaptive: PD on the crack and the tip, two horizons around them (rounded up to cells),
     # an overlap band of 2 cells; FE cells within 3 horizons of damage become PD, checked
     # every 20 steps.
@@ -83,7 +73,7 @@ subsection Adaptive PD zone
   end
 end
 EOF
-  else
+  elif [ "$coupled" = 1 ]; then
     # PD: x <= A c, |y| <= H c, with H and A from the kink (5 horizons at up to 61 degrees
     # plus 2 horizons of margin); overlaps of W = 2 cells.
     local delta H A W x1 y1 ox oy
@@ -104,13 +94,12 @@ subsection Coupling
   set Finite element region = -$L, $oy : $L, $L ; -$L, -$L : $L, -$oy ; $ox, -$oy : $L, $oy
 end
 EOF
+  else
+    echo "end"
   fi
   cat << EOF
 subsection Boundary conditions
   subsection Crack tip field
-    set Boundary ids            = 0, 1, 2, 3
-    set Tip                     = 0, 0
-    set Crack direction         = 0
     set Stress intensity factor = $kdot*t
     set Phase angle             = $psi
   end
@@ -119,18 +108,9 @@ subsection Time
   set Time step = $(calc "1e-7 * 128 / $n")
   set End time  = $end
 end
-subsection Postprocess
-  set List of postprocessors = energies, cracks, zone sizes
-  subsection cracks
-    set Initial tip = 0, 0
-  end
-end
 subsection Output
-  set Directory            = $name
-  set Output interval      = $(calc "int($end / (1e-7 * 128 / $n) + 0.5)")
-  set Energy interval      = 20
-  set Progress interval    = 60
-  set Print timing summary = true
+  set Directory       = $name
+  set Output interval = $(calc "int($end / (1e-7 * 128 / $n) + 0.5)")
 end
 EOF
 }
@@ -139,7 +119,7 @@ EOF
 # <name>/damage.png.
 run() {
   run_case "$@"
-  "$here/plot_cracks.sh" "$1" > /dev/null 2>&1 || true
+  "$scripts/plot_cracks.sh" "$1" > /dev/null 2>&1 || true
 }
 
 # Phase angles psi = atan(K_II / K_I): 0, and K_II / K_I = 0.25, 0.5, 1, 2.
@@ -195,10 +175,10 @@ for group in $groups; do
 done
 # Every run is a directory (names may hold a decimal point).
 runs=$({ ls -d pd_*/ coupled*/ adaptive*/ 2> /dev/null || true; } | sed 's|/$||' | grep -v '_energy$' | sort -u)
-"$here/mixed_mode_table.sh" $runs
+"$here/table.sh" $runs
 energy_runs=$({ ls -d pd_*_energy/ 2> /dev/null || true; } | sed 's|/$||' | sort -u)
 if [ -n "$energy_runs" ]; then
-  "$here/mixed_mode_table.sh" $energy_runs
+  "$here/table.sh" $energy_runs
   "$here/crack_energy_table.sh" pd_strain_0 pd_strain_0_n128_m6 pd_strain_0_n128_m8 \
     $(echo "$energy_runs" | grep '^pd_strain_0_') 2> /dev/null || true
 fi
