@@ -63,9 +63,22 @@ namespace PeriArlequin
     void
     run();
 
-    /** One step of the time integrator from the current state, then grow_pd_zone(). */
+    /**
+     * One step of the time integrator from the current state, then grow_pd_zone() and
+     * check_fe_strain().
+     */
     void
     advance();
+
+    /**
+     * With fracture in a coupled run, every Coupling/Strain check interval steps: the FE
+     * field's largest principal strain at the cell centres over the critical stretch
+     * (collective; 0 without a critical stretch). The FE zone cannot break: where the ratio
+     * reaches 1, PD might crack where the run cannot, and rank 0 warns with the time and the
+     * place (again when the ratio has grown by 10 %).
+     */
+    double
+    check_fe_strain();
 
     /**
      * Between steps, with an adaptive PD zone: every Adaptive PD zone/Check interval steps,
@@ -275,6 +288,8 @@ namespace PeriArlequin
     std::unique_ptr<CheckpointRecord> resumed;
     std::string                       resume_directory;
     double                            last_checkpoint_wall_time = 0.;
+    /** The largest FE strain ratio check_fe_strain() warned about. */
+    double warned_strain_ratio = 0.;
     /** While resuming: each cell's owner in the checkpointed run (by active cell index). */
     std::vector<unsigned int> saved_owner;
     /** Cell weights that replace the PD ones while not empty (restore_saved_partition()). */

@@ -3,8 +3,6 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/symmetric_tensor.h>
-#include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
 #include <sstream>
@@ -168,7 +166,7 @@ namespace PeriArlequin
     entries.add("Strain",
                 strain_threshold,
                 Patterns::Double(0),
-                "FE cells whose largest principal strain at the centre reaches this become "
+                "FE cells whose largest principal strain at a Gauss point reaches this become "
                 "PD; 0: use Fraction of critical stretch [-].");
     entries.add("Fraction of critical stretch",
                 stretch_fraction,
@@ -178,8 +176,10 @@ namespace PeriArlequin
     entries.add("Buffer",
                 buffer,
                 Patterns::Double(0),
-                "FE cells within this distance of a cell over the threshold become PD with it "
-                "[m].");
+                "FE cells within this distance of a cell over the threshold become PD with it. "
+                "0 (the default): the growth's trigger distance, two bond reaches and a "
+                "wave's run in a step, the least room a crack needs to start inside the zone "
+                "without reaching the overlap at once [m].");
   }
 
   template <int dim>
@@ -199,9 +199,11 @@ namespace PeriArlequin
   template <int dim>
   void
   StrainCriterion<dim>::initialize(const FEZone<dim> &,
-                                   const PDZone<dim> &pd_zone,
-                                   const GrowthContext &)
+                                   const PDZone<dim>   &pd_zone,
+                                   const GrowthContext &context)
   {
+    if (buffer == 0)
+      buffer = context.trigger_distance;
     if (strain_threshold > 0)
       return;
     strain_threshold = stretch_fraction * pd_zone.get_critical_stretch();
@@ -219,31 +221,21 @@ namespace PeriArlequin
                                    const PDZone<dim> &pd_zone,
                                    std::vector<bool> &convert) const
   {
-    const auto &u = fe_zone.get_state().displacement;
-    u.update_ghost_values();
-    const auto                          &dof_handler = fe_zone.get_dof_handler();
-    const QMidpoint<dim>                 centre;
-    FEValues<dim>                        fe_values(dof_handler.get_fe(0), centre, update_gradients);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> strain(1);
-    std::vector<Point<dim>>              strained;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
-          continue;
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(u, strain);
-        if (eigenvalues(strain[0])[0] >= strain_threshold)
-          {
-            convert[cell->active_cell_index()] = true;
-            strained.push_back(cell->center());
-          }
-      }
+    const unsigned int        degree = fe_zone.get_dof_handler().get_fe(0).degree;
+    const std::vector<double> strain = fe_zone.largest_principal_strains(QGauss<dim>(degree + 1));
+    std::vector<Point<dim>>   strained;
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && strain[cell->active_cell_index()] >= strain_threshold)
+        {
+          convert[cell->active_cell_index()] = true;
+          strained.push_back(cell->center());
+        }
     if (buffer > 0)
       {
         // Measured from the flagged cells' centres: half a cell is added to the buffer.
-        strained               = internal::gather_points(strained, pd_zone.get_communicator());
-        const double half_cell = 0.5 * dof_handler.begin_active()->diameter() / std::sqrt(dim);
+        strained = internal::gather_points(strained, pd_zone.get_communicator());
+        const double half_cell =
+          0.5 * fe_zone.get_dof_handler().begin_active()->diameter() / std::sqrt(dim);
         internal::mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
       }
   }

@@ -17,13 +17,15 @@ namespace PeriArlequin
     {
       entries.add("Conversion criterion",
                   conversion_criterion,
-                  Patterns::Selection("none|" + ConversionCriterionRegistry<dim>::names()),
-                  "Which FE cells become PD during the run, by registered name (none: the "
-                  "PD zone is fixed):" +
+                  Patterns::MultipleSelection("none|" + ConversionCriterionRegistry<dim>::names()),
+                  "Which FE cells become PD during the run: none (the PD zone is fixed) or a "
+                  "comma-separated list of registered names, whose flags add up (a cell "
+                  "converts if any criterion flags it):" +
                     ConversionCriterionRegistry<dim>::documentation() +
-                    "\nNeeds a coupled case whose overlap is a band (Coupling/Overlap "
-                    "width). A criterion's own parameters are in the subsection of its "
-                    "name.");
+                    "\n'damage distance, strain' follows running cracks and catches those that "
+                    "start away from damage (where the FE strain nears the critical stretch). "
+                    "Needs a coupled case whose overlap is a band (Coupling/Overlap width). A "
+                    "criterion's own parameters are in the subsection of its name.");
       entries.add("Check interval",
                   check_interval,
                   Patterns::Integer(1),
@@ -65,7 +67,12 @@ namespace PeriArlequin
     Parameters::AdaptivePDZone<dim> parameters;
     ParameterEntries::parse_here(prm, parameters, "Adaptive PD zone/");
     std::unique_ptr<PDZoneGrowth<dim>> growth;
-    const std::string                 &name = parameters.conversion_criterion;
+    const std::string                 &name  = parameters.conversion_criterion;
+    const std::vector<std::string>     names = Utilities::split_string_list(name);
+    if (names.size() > 1 && std::find(names.begin(), names.end(), "none") != names.end())
+      throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
+                              name,
+                              "none alone, or a list of registered criteria");
     if (name != "none")
       {
         if (!coupling.coupled() || !(coupling.overlap_width > 0))
@@ -79,22 +86,23 @@ namespace PeriArlequin
                                   name,
                                   "none with Geometry/Mesh file: converted cells join the PD "
                                   "region as boxes, which only the cells of the box mesh are");
+        std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria;
+        for (const std::string &criterion : names)
+          criteria.push_back(ConversionCriterionRegistry<dim>::create(criterion, prm));
         growth =
-          std::make_unique<PDZoneGrowth<dim>>(parameters,
-                                              ConversionCriterionRegistry<dim>::create(name, prm),
-                                              pd_parameters);
+          std::make_unique<PDZoneGrowth<dim>>(parameters, std::move(criteria), pd_parameters);
       }
     prm.leave_subsection();
     return growth;
   }
 
   template <int dim>
-  PDZoneGrowth<dim>::PDZoneGrowth(const Parameters::AdaptivePDZone<dim>    &parameters,
-                                  std::unique_ptr<ConversionCriterion<dim>> criterion,
-                                  const Parameters::Peridynamics<dim>      &pd_parameters)
+  PDZoneGrowth<dim>::PDZoneGrowth(const Parameters::AdaptivePDZone<dim>                 &parameters,
+                                  std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria,
+                                  const Parameters::Peridynamics<dim> &parameters_of_pd)
     : parameters(parameters)
-    , criterion(std::move(criterion))
-    , particle_reach(pd_parameters.coupled_particle_reach())
+    , criteria(std::move(criteria))
+    , particle_reach(parameters_of_pd.coupled_particle_reach())
   {}
 
   template <int dim>
@@ -110,7 +118,8 @@ namespace PeriArlequin
     context.trigger_distance             = 2. * (pd.horizon() + 0.5 * pd.lattice_spacing) +
                                material.longitudinal_wave_speed(dim) * time_step;
     context.crack_speed_bound = material.shear_wave_speed();
-    criterion->initialize(fe_zone, pd_zone, context);
+    for (const auto &criterion : criteria)
+      criterion->initialize(fe_zone, pd_zone, context);
   }
 
   template <int dim>
@@ -157,7 +166,8 @@ namespace PeriArlequin
   {
     const auto       &triangulation = fe_zone.get_dof_handler().get_triangulation();
     std::vector<bool> convert(triangulation.n_active_cells(), false);
-    criterion->mark_cells(fe_zone, pd_zone, convert);
+    for (const auto &criterion : criteria)
+      criterion->mark_cells(fe_zone, pd_zone, convert);
     if (!new_damage.empty())
       internal::mark_cells_near(fe_zone, new_damage, context.conversion_distance(), convert);
     // Each converted cell as its lower and upper corner.

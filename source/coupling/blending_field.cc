@@ -81,6 +81,16 @@ namespace PeriArlequin
                   "its own motion is that of the lattice. Nodes next to the alpha = 1 edge "
                   "with a tiny weight but free would lag behind the FE field and stretch "
                   "their bonds to the slaves [-].");
+      entries.add("Strain check interval",
+                  strain_check_interval,
+                  Patterns::Integer(0),
+                  "With fracture: every this many steps, the largest principal strain of the "
+                  "FE field at the centre of every cell with FE unknowns (overlap and FE "
+                  "zone; the cell's mean strain, as a bond about a cell long sees it) is "
+                  "compared with the critical stretch. Where it reaches it, PD might break "
+                  "bonds that the FE zone cannot: the run warns with the time and the place "
+                  "(enlarge the PD region, or let it grow with the strain criterion of "
+                  "Adaptive PD zone). 0: no check [-].");
     }
 
     void

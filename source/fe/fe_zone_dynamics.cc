@@ -2,6 +2,11 @@
 // the work of loads and support reactions. Assembly and operators are in fe_zone.cc.
 #include <periarlequin/fe/fe_zone.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <limits>
+
 namespace PeriArlequin
 {
   namespace
@@ -216,6 +221,43 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::vector<double>
+  FEZone<dim>::largest_principal_strains(const Quadrature<dim>   &points,
+                                         std::vector<Point<dim>> *where) const
+  {
+    const auto &u = state.displacement;
+    u.update_ghost_values();
+    std::vector<double> largest(triangulation.n_active_cells(),
+                                -std::numeric_limits<double>::infinity());
+    if (where)
+      where->assign(triangulation.n_active_cells(), Point<dim>());
+    FEValues<dim>                        fe_values(mapping,
+                            fe_collection[0],
+                            points,
+                            update_gradients | (where ? update_quadrature_points : update_default));
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(points.size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(u, strain);
+          const unsigned int c = cell->active_cell_index();
+          for (unsigned int q = 0; q < strain.size(); ++q)
+            {
+              const double e = eigenvalues(strain[q])[0];
+              if (e > largest[c])
+                {
+                  largest[c] = e;
+                  if (where)
+                    (*where)[c] = fe_values.quadrature_point(q);
+                }
+            }
+        }
+    return largest;
+  }
+
+  template <int dim>
   const typename FEZone<dim>::State &
   FEZone<dim>::get_state() const
   {
@@ -246,17 +288,20 @@ namespace PeriArlequin
 
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
 #define PERIARLEQUIN_INSTANTIATE(dim)                                                            \
-  template void           FEZone<dim>::initialize_state(const ProblemData<dim> &, const double); \
-  template std::string    FEZone<dim>::name() const;                                             \
-  template void           FEZone<dim>::predict(const double);                                    \
-  template void           FEZone<dim>::impose_prescribed_motion(const double);                   \
-  template void           FEZone<dim>::compute_accelerations(const double);                      \
-  template void           FEZone<dim>::correct(const double);                                    \
-  template void           FEZone<dim>::account_work();                                           \
-  template double         FEZone<dim>::kinetic_energy() const;                                   \
-  template double         FEZone<dim>::strain_energy() const;                                    \
-  template Tensor<1, dim> FEZone<dim>::linear_momentum() const;                                  \
-  template double         FEZone<dim>::external_work() const;                                    \
+  template void        FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);    \
+  template std::string FEZone<dim>::name() const;                                                \
+  template void        FEZone<dim>::predict(const double);                                       \
+  template void        FEZone<dim>::impose_prescribed_motion(const double);                      \
+  template void        FEZone<dim>::compute_accelerations(const double);                         \
+  template void        FEZone<dim>::correct(const double);                                       \
+  template void        FEZone<dim>::account_work();                                              \
+  template double      FEZone<dim>::kinetic_energy() const;                                      \
+  template double      FEZone<dim>::strain_energy() const;                                       \
+  template std::vector<double> FEZone<dim>::largest_principal_strains(const Quadrature<dim> &,   \
+                                                                      std::vector<Point<dim>> *) \
+    const;                                                                                       \
+  template Tensor<1, dim>                                 FEZone<dim>::linear_momentum() const;  \
+  template double                                         FEZone<dim>::external_work() const;    \
   template const FEZone<dim>::State                      &FEZone<dim>::get_state() const;        \
   template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()     \
     const;                                                                                       \

@@ -1,6 +1,11 @@
 #include <periarlequin/simulator.h>
 
+#include <deal.II/base/quadrature_lib.h>
+
+#include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <sstream>
 
 namespace PeriArlequin
 {
@@ -65,6 +70,45 @@ namespace PeriArlequin
     integrator->step();
     if (zone_growth)
       grow_pd_zone();
+    const unsigned int interval = coupling_parameters.strain_check_interval;
+    if (interval > 0 && get_step_number() % interval == 0)
+      check_fe_strain();
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::check_fe_strain()
+  {
+    if (!coupling || !pd_zone || !(pd_zone->get_critical_stretch() > 0))
+      return 0.;
+    const double            critical = pd_zone->get_critical_stretch();
+    std::vector<Point<dim>> where;
+    // At the cell centres: the mean strain of a cell, as a bond about a cell long sees it.
+    const std::vector<double> strain = fe_zone->largest_principal_strains(QMidpoint<dim>(), &where);
+    const auto                largest = std::max_element(strain.begin(), strain.end());
+    const double              local =
+      largest == strain.end() ? -std::numeric_limits<double>::infinity() : *largest;
+    const double global = Utilities::MPI::max(local, communicator);
+    const double ratio  = global / critical;
+    if (ratio < 1. || ratio < 1.1 * warned_strain_ratio)
+      return ratio;
+    warned_strain_ratio = ratio;
+    // The place from the lowest rank that holds the largest strain.
+    const unsigned int rank =
+      Utilities::MPI::min(local == global ? Utilities::MPI::this_mpi_process(communicator) :
+                                            std::numeric_limits<unsigned int>::max(),
+                          communicator);
+    const Point<dim> place =
+      Utilities::MPI::broadcast(communicator,
+                                local == global ? where[largest - strain.begin()] : Point<dim>(),
+                                rank);
+    pcout << "Warning: at t = " << get_time() << " s the FE field's strain reaches " << ratio
+          << " times the critical stretch " << critical << " at (" << place
+          << ") m. The FE zone cannot break: PD might crack there, this run cannot. Put that "
+             "place in the PD region, or let the zone grow before the strain gets there "
+             "(Adaptive PD zone/Conversion criterion = damage distance, strain)."
+          << std::endl;
+    return ratio;
   }
 
   template <int dim>

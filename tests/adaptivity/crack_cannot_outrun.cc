@@ -90,9 +90,9 @@ main(int argc, char **argv)
           {
             const auto x = a.column(column), y = b.column(column);
             for (unsigned int n = 0; n < x.size(); ++n)
-              energy_difference = std::max(energy_difference,
-                                           std::abs(x[n] - y[n]) /
-                                             std::max(std::abs(y.back()), 1e-300));
+              energy_difference =
+                std::max(energy_difference,
+                         std::abs(x[n] - y[n]) / std::max(std::abs(y.back()), 1e-300));
           }
 
         const auto &reference = pure->get_energy_history();
@@ -112,14 +112,12 @@ main(int argc, char **argv)
              {std::pair<std::string, PeriArlequin::Simulator<2> *>{"default", serial.get()},
               {"trigger only", trigger_only.get()}})
           {
-            const auto &h = run->get_energy_history();
-            figures[name + ": cells converted"] = h.column("converted_cells").back();
+            const auto &h                             = run->get_energy_history();
+            figures[name + ": cells converted"]       = h.column("converted_cells").back();
             figures[name + ": |tip x - pure PD| [m]"] = std::abs(tip_x(h) - tip_x(reference));
             figures[name + ": branches"]              = h.column("branches").back();
-            figures[name + ": crack extension / pure PD - 1"] =
-              std::abs(h.column("crack_extension").back() /
-                         reference.column("crack_extension").back() -
-                       1);
+            figures[name + ": crack extension / pure PD - 1"] = std::abs(
+              h.column("crack_extension").back() / reference.column("crack_extension").back() - 1);
           }
         figures["pure PD: branches"] = reference.column("branches").back();
       }
@@ -132,7 +130,9 @@ main(int argc, char **argv)
     check("pure PD: branches at the end", broadcast(figures["pure PD: branches"]), 2, 0);
     for (const std::string name : {"default", "trigger only"})
       {
-        check_above(name + ": cells converted", broadcast(figures[name + ": cells converted"]), 0.5);
+        check_above(name + ": cells converted",
+                    broadcast(figures[name + ": cells converted"]),
+                    0.5);
         check_below(name + ": |leading tip x - pure PD| [m] (two horizons)",
                     broadcast(figures[name + ": |tip x - pure PD| [m]"]),
                     4e-3);

@@ -149,11 +149,12 @@ namespace PeriArlequin
   };
 
   /**
-   * Cells where the continuum is strained towards failure become PD: a cell is flagged if
-   * the largest principal strain of the FE field at its centre reaches "Strain", or, if that
-   * is 0, "Fraction of critical stretch" times the fracture criterion's critical stretch.
-   * Cells next to a flagged cell (within "Buffer" [m] of it) are flagged too, so the zone
-   * runs ahead of the strain concentration.
+   * Cells where the continuum is strained towards failure become PD, before any bond
+   * breaks: a cell is flagged if the largest principal strain of the FE field at one of its
+   * Gauss points (the stretch of the worst-aligned bond) reaches "Strain", or, if that is 0,
+   * "Fraction of critical stretch" times the fracture criterion's critical stretch. Cells
+   * next to a flagged cell (within "Buffer" [m] of it, by default the trigger distance) are
+   * flagged too, so that a crack that starts there is inside the zone.
    */
   template <int dim>
   class StrainCriterion : public ConversionCriterion<dim>

@@ -20,11 +20,11 @@ namespace PeriArlequin
 
   namespace Parameters
   {
-    /** Subsection "Adaptive PD zone": which criterion converts FE cells, and how often. */
+    /** Subsection "Adaptive PD zone": which criteria convert FE cells, and how often. */
     template <int dim>
     struct AdaptivePDZone
     {
-      /** "none" (a fixed PD zone) or a registered ConversionCriterion. */
+      /** "none" (a fixed PD zone) or a list of registered ConversionCriterion names. */
       std::string  conversion_criterion = "none";
       unsigned int check_interval       = 10;
       double       imbalance_tolerance  = 0.1;
@@ -35,8 +35,8 @@ namespace PeriArlequin
   } // namespace Parameters
 
   /**
-   * The growth of an adaptive PD zone, between steps: the FE cells that the conversion
-   * criterion flags become pure PD. Their boxes join the PD region; the overlap band and the
+   * The growth of an adaptive PD zone, between steps: the FE cells that one of the conversion
+   * criteria flags become pure PD. Their boxes join the PD region; the overlap band and the
    * slave layer move outward; new particles fill the lattice sites the grown zone needs, with
    * displacement, velocity and acceleration interpolated from the FE field (which still lives
    * in the converted cells); the FE zone drops the DoFs of the converted cells; the caller
@@ -69,9 +69,10 @@ namespace PeriArlequin
            const Parameters::Geometry          &geometry,
            const Parameters::Peridynamics<dim> &pd_parameters);
 
-    PDZoneGrowth(const Parameters::AdaptivePDZone<dim>    &parameters,
-                 std::unique_ptr<ConversionCriterion<dim>> criterion,
-                 const Parameters::Peridynamics<dim>      &pd_parameters);
+    /** A growth that converts the cells any of @p criteria flags. */
+    PDZoneGrowth(const Parameters::AdaptivePDZone<dim>                 &parameters,
+                 std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria,
+                 const Parameters::Peridynamics<dim>                   &parameters_of_pd);
 
     /**
      * The trigger distance and the criterion's automatic defaults from the material and the
@@ -128,7 +129,7 @@ namespace PeriArlequin
 
   private:
     /**
-     * The cells that are FE now and flagged by the criterion or near @p new_damage, as boxes,
+     * The cells that are FE now and flagged by a criterion or near @p new_damage, as boxes,
      * gathered from all ranks.
      */
     std::vector<Box<dim>>
@@ -136,8 +137,8 @@ namespace PeriArlequin
                   const PDZone<dim>      &pd_zone,
                   std::vector<Point<dim>> new_damage) const;
 
-    const Parameters::AdaptivePDZone<dim>     parameters;
-    std::unique_ptr<ConversionCriterion<dim>> criterion;
+    const Parameters::AdaptivePDZone<dim>                  parameters;
+    std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria;
     /** The particles the grown zone holds: within this distance of its PD part [m]. */
     const double  particle_reach;
     GrowthContext context;

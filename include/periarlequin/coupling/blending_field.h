@@ -66,6 +66,8 @@ namespace PeriArlequin
       double           damping_wave_speed    = 0.;
       double           damping_overlap_width = 0.;
       double           minimum_pd_weight     = 0.1;
+      /** Steps between two checks of the FE strain against the critical stretch (0: none). */
+      unsigned int strain_check_interval = 10;
 
       /** Are the zones coupled? */
       bool

@@ -286,6 +286,17 @@ namespace PeriArlequin
     types::global_dof_index
     n_dofs() const;
 
+    /**
+     * The largest principal strain of the displacement field in each locally owned cell with
+     * FE unknowns (index: active cell index; -infinity elsewhere): the largest over the
+     * @p points of the cell (a quadrature's points on the reference cell), each the stretch
+     * of the worst-aligned bond the field would impose (small strain). If @p where is given,
+     * it receives the point of each maximum.
+     */
+    std::vector<double>
+    largest_principal_strains(const Quadrature<dim>   &points,
+                              std::vector<Point<dim>> *where = nullptr) const;
+
   private:
     /** FE indices from fe_cells, DoFs, matrix and vector layouts, mass and stiffness. */
     void
