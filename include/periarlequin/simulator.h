@@ -37,6 +37,38 @@ namespace PeriArlequin
    * predictor-corrector step of eq. 58-69; otherwise a case is pure FE or pure PD, or has
    * independent FE and PD bodies.
    */
+  namespace Parameters
+  {
+    /** The top level of a parameter file: the space dimension. */
+    struct Run
+    {
+      unsigned int dimension = 2;
+
+      void
+      entries(ParameterEntries &entries);
+    };
+
+    /** Subsection "Postprocess": the postprocessors, by registered name. */
+    template <int dim>
+    struct Postprocess
+    {
+      std::string postprocessors = "energies, monitor region energies, constraint residuals";
+
+      void
+      entries(ParameterEntries &entries);
+    };
+
+    /** Subsection "Contact": the contact model, by registered name. */
+    template <int dim>
+    struct ContactModel
+    {
+      std::string model = "none";
+
+      void
+      entries(ParameterEntries &entries);
+    };
+  } // namespace Parameters
+
   template <int dim>
   class Simulator
   {

@@ -99,23 +99,38 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  declare_component_selection(ParameterHandler &prm, const std::string &documentation)
+  BoundaryCondition<dim>::entries(ParameterEntries &entries)
   {
-    prm.declare_entry("Components",
-                      dim == 2 ? "x, y" : "x, y, z",
-                      Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                      documentation);
+    entries.add("Type",
+                type,
+                boundary_type_names,
+                "Condition on boundary id " + std::to_string(id) +
+                  " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
+                  "traction), displacement (prescribed components) or traction. "
+                  "PD particles within two bond reaches (2 delta + dx) of a "
+                  "displacement face follow the displacement (a fictitious boundary "
+                  "layer inside the domain); those within dx of a traction face "
+                  "carry t / dx.");
+    entries.add_components("Components",
+                           components,
+                           dim,
+                           "Components whose displacement is prescribed (Type = displacement).");
   }
 
-  template <int dim>
-  ComponentMask
-  parse_component_selection(ParameterHandler &prm)
+  namespace Parameters
   {
-    std::vector<bool> mask(dim, false);
-    for (const std::string &c : Utilities::split_string_list(prm.get("Components")))
-      mask[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
-    return ComponentMask(mask);
-  }
+    template <int dim>
+    void
+    InitialConditionModel<dim>::entries(ParameterEntries &entries)
+    {
+      entries.add("Model",
+                  model,
+                  Patterns::Selection(InitialConditionRegistry<dim>::names()),
+                  "The initial displacement and velocity, by registered name:" +
+                    InitialConditionRegistry<dim>::documentation() +
+                    "\nA model's own parameters are in the subsection of its name.");
+    }
+  } // namespace Parameters
 
   template <int dim>
   ProblemData<dim>::ProblemData()
@@ -127,12 +142,7 @@ namespace PeriArlequin
   ProblemData<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    prm.declare_entry("Model",
-                      "function",
-                      Patterns::Selection(InitialConditionRegistry<dim>::names()),
-                      "The initial displacement and velocity, by registered name:" +
-                        InitialConditionRegistry<dim>::documentation() +
-                        "\nA model's own parameters are in the subsection of its name.");
+    ParameterEntries::declare_here<Parameters::InitialConditionModel<dim>>(prm);
     InitialConditionRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
 
@@ -142,19 +152,9 @@ namespace PeriArlequin
     for (unsigned int b = 0; b < n_boundaries; ++b)
       {
         prm.enter_subsection("Boundary " + std::to_string(b));
-        prm.declare_entry("Type",
-                          "free",
-                          selection_pattern(boundary_type_names),
-                          "Condition on boundary id " + std::to_string(b) +
-                            " (0/1: x faces, 2/3: y faces, 4/5: z faces): free (zero "
-                            "traction), displacement (prescribed components) or traction. "
-                            "PD particles within two bond reaches (2 delta + dx) of a "
-                            "displacement face follow the displacement (a fictitious boundary "
-                            "layer inside the domain); those within dx of a traction face "
-                            "carry t / dx.");
-        declare_component_selection<dim>(
-          prm,
-          "Components whose displacement is prescribed (Type = displacement).");
+        BoundaryCondition<dim> defaults;
+        defaults.id = b;
+        ParameterEntries::declare_here(prm, std::move(defaults));
         declare_vector_function<dim>(
           prm,
           "Function",
@@ -171,7 +171,9 @@ namespace PeriArlequin
   ProblemData<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
-    initial_condition = InitialConditionRegistry<dim>::create(prm.get("Model"), prm);
+    Parameters::InitialConditionModel<dim> initial;
+    ParameterEntries::parse_here(prm, initial, "Initial conditions/");
+    initial_condition = InitialConditionRegistry<dim>::create(initial.model, prm);
     prm.leave_subsection();
 
     parse_vector_function(prm, "", "Body force", body_force);
@@ -185,8 +187,8 @@ namespace PeriArlequin
         const std::string name = "Boundary " + std::to_string(b);
         prm.enter_subsection(name);
         BoundaryCondition<dim> &condition = boundary_conditions[b];
-        condition.type                    = selection_value(prm.get("Type"), boundary_type_names);
-        condition.components              = parse_component_selection<dim>(prm);
+        condition.id                      = b;
+        ParameterEntries::parse_here(prm, condition, "Boundary conditions/" + name + "/");
         if (condition.type == BoundaryType::displacement &&
             condition.components.n_selected_components() == 0)
           throw_invalid_parameter("Boundary conditions/" + name + "/Components",
@@ -249,14 +251,10 @@ namespace PeriArlequin
                            const std::string &,
                            const std::string &,
                            Functions::ParsedFunction<3> &);
-  template void
-  declare_component_selection<2>(ParameterHandler &, const std::string &);
-  template void
-  declare_component_selection<3>(ParameterHandler &, const std::string &);
-  template ComponentMask
-  parse_component_selection<2>(ParameterHandler &);
-  template ComponentMask
-  parse_component_selection<3>(ParameterHandler &);
+  template struct BoundaryCondition<2>;
+  template struct BoundaryCondition<3>;
+  template struct Parameters::InitialConditionModel<2>;
+  template struct Parameters::InitialConditionModel<3>;
   template class ProblemData<2>;
   template class ProblemData<3>;
 } // namespace PeriArlequin

@@ -35,6 +35,7 @@ namespace PeriArlequin
                   prescribes_velocity,
                   prescribed_quantity_names,
                   "Whether Function gives the displacement [m] or the velocity [m/s].");
+      entries.add_components("Components", components, dim, "Prescribed components.");
     }
 
     template <int dim>
@@ -120,7 +121,6 @@ namespace PeriArlequin
           const std::string name = "Prescribed region " + std::to_string(r);
           ParameterEntries::declare<PrescribedParticleRegion<dim>>(prm, name);
           prm.enter_subsection(name);
-          declare_component_selection<dim>(prm, "Prescribed components.");
           declare_vector_function<dim>(prm,
                                        "Function",
                                        "Prescribed displacement [m] or velocity [m/s].");
@@ -141,8 +141,7 @@ namespace PeriArlequin
           auto             &p    = prescribed[r];
           ParameterEntries::parse(prm, name, p, "Peridynamics/");
           prm.enter_subsection(name);
-          p.components = parse_component_selection<dim>(prm);
-          p.function   = std::make_unique<Functions::ParsedFunction<dim>>(dim);
+          p.function = std::make_unique<Functions::ParsedFunction<dim>>(dim);
           parse_vector_function(prm, "Peridynamics/" + name + "/", "Function", *p.function);
           prm.leave_subsection();
         }

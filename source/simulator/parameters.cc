@@ -3,14 +3,54 @@
 
 namespace PeriArlequin
 {
+  namespace Parameters
+  {
+    void
+    Run::entries(ParameterEntries &entries)
+    {
+      entries.add("Dimension",
+                  dimension,
+                  Patterns::Integer(2, 3),
+                  "Space dimension of the run (2: plane stress or plane strain, 3).");
+    }
+
+    template <int dim>
+    void
+    Postprocess<dim>::entries(ParameterEntries &entries)
+    {
+      entries.add("List of postprocessors",
+                  postprocessors,
+                  Patterns::MultipleSelection(PostprocessorRegistry<dim>::names()),
+                  "Postprocessors that add columns to the energy history (CSV) at every "
+                  "recorded step (Output/Energy interval), by registered name:" +
+                    PostprocessorRegistry<dim>::documentation() +
+                    "\nA postprocessor's own parameters are in the subsection of its name.");
+    }
+
+    template <int dim>
+    void
+    ContactModel<dim>::entries(ParameterEntries &entries)
+    {
+      entries.add("Model",
+                  model,
+                  Patterns::Selection("none|" + ContactRegistry<dim>::names()),
+                  "Contact of the FE boundary with an obstacle, by registered name (none: "
+                  "no contact):" +
+                    ContactRegistry<dim>::documentation() +
+                    "\nA model's own parameters are in the subsection of its name.");
+    }
+
+    template struct Postprocess<2>;
+    template struct Postprocess<3>;
+    template struct ContactModel<2>;
+    template struct ContactModel<3>;
+  } // namespace Parameters
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension of the run (2: plane stress or plane strain, 3).");
+    ParameterEntries::declare_here<Parameters::Run>(prm);
     Parameters::Geometry::declare_parameters(prm);
     Parameters::Material::declare_parameters(prm);
     Parameters::FiniteElements::declare_parameters(prm);
@@ -21,24 +61,11 @@ namespace PeriArlequin
     Parameters::Coupling::declare_parameters(prm);
     ProblemData<dim>::declare_parameters(prm);
     prm.enter_subsection("Postprocess");
-    prm.declare_entry("List of postprocessors",
-                      "energies, monitor region energies, constraint residuals",
-                      Patterns::MultipleSelection(PostprocessorRegistry<dim>::names()),
-                      "Postprocessors that add columns to the energy history (CSV) at every "
-                      "recorded step (Output/Energy interval), by registered name:" +
-                        PostprocessorRegistry<dim>::documentation() +
-                        "\nA postprocessor's own parameters are in the subsection of its "
-                        "name.");
+    ParameterEntries::declare_here<Parameters::Postprocess<dim>>(prm);
     PostprocessorRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
     prm.enter_subsection("Contact");
-    prm.declare_entry("Model",
-                      "none",
-                      Patterns::Selection("none|" + ContactRegistry<dim>::names()),
-                      "Contact of the FE boundary with an obstacle, by registered name (none: "
-                      "no contact):" +
-                        ContactRegistry<dim>::documentation() +
-                        "\nA model's own parameters are in the subsection of its name.");
+    ParameterEntries::declare_here<Parameters::ContactModel<dim>>(prm);
     ContactRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
     PDZoneGrowth<dim>::declare_parameters(prm);
@@ -51,8 +78,10 @@ namespace PeriArlequin
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator)
   {
-    AssertThrow(prm.get_integer("Dimension") == dim,
-                ExcMessage("The parameters declare Dimension = " + prm.get("Dimension") +
+    Parameters::Run run;
+    ParameterEntries::parse_here(prm, run, "");
+    AssertThrow(run.dimension == dim,
+                ExcMessage("The parameters declare Dimension = " + std::to_string(run.dimension) +
                            " but are run by a " + std::to_string(dim) + "D simulator."));
     geometry.parse_parameters(prm, dim);
     material.parse_parameters(prm);
@@ -74,13 +103,17 @@ namespace PeriArlequin
         prm.leave_subsection();
       }
     prm.enter_subsection("Contact");
-    contact_model = prm.get("Model");
+    Parameters::ContactModel<dim> contact_choice;
+    ParameterEntries::parse_here(prm, contact_choice, "Contact/");
+    contact_model = contact_choice.model;
     if (contact_model != "none")
       contact = ContactRegistry<dim>::create(contact_model, prm);
     prm.leave_subsection();
     zone_growth = PDZoneGrowth<dim>::create(prm, coupling_parameters, geometry, pd_parameters);
     prm.enter_subsection("Postprocess");
-    for (const auto &name : Utilities::split_string_list(prm.get("List of postprocessors")))
+    Parameters::Postprocess<dim> postprocess;
+    ParameterEntries::parse_here(prm, postprocess, "Postprocess/");
+    for (const auto &name : Utilities::split_string_list(postprocess.postprocessors))
       postprocessors.push_back(PostprocessorRegistry<dim>::create(name, prm));
     prm.leave_subsection();
     if (coupling_parameters.coupled())

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/patterns.h>
+#include <deal.II/fe/component_mask.h>
 
 #include <functional>
 #include <string>
@@ -83,12 +84,14 @@ namespace PeriArlequin
       prm.leave_subsection();
     }
 
-    /** Declare the entries of @p Structure in the current subsection (plugins). */
+    /**
+     * Declare the entries of @p Structure in the current subsection (plugins), with the
+     * defaults and documentation of @p defaults (default constructed if not given).
+     */
     template <typename Structure>
     static void
-    declare_here(ParameterHandler &prm)
+    declare_here(ParameterHandler &prm, Structure defaults = Structure())
     {
-      Structure        defaults;
       ParameterEntries entries(prm, "", false);
       defaults.entries(entries);
     }
@@ -147,6 +150,35 @@ namespace PeriArlequin
         for (const auto &[text, value] : names)
           if (value == member)
             prm.declare_entry(name, text, selection_pattern(names), documentation);
+    }
+
+    /**
+     * A selection of displacement components, "x, y[, z]" in @p dim dimensions, as a
+     * ComponentMask (declared default: the components @p member selects, all if it is empty).
+     */
+    void
+    add_components(const std::string &name,
+                   ComponentMask     &member,
+                   const unsigned int dim,
+                   const std::string &documentation)
+    {
+      const char *axes[3] = {"x", "y", "z"};
+      if (parsing)
+        {
+          std::vector<bool> selected(dim, false);
+          for (const std::string &c : Utilities::split_string_list(prm.get(name)))
+            selected[c == "x" ? 0 : (c == "y" ? 1 : 2)] = true;
+          member = ComponentMask(selected);
+          return;
+        }
+      std::string choices, default_text;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          choices += (d > 0 ? "|" : "") + std::string(axes[d]);
+          if (member.size() == 0 || member[d])
+            default_text += (default_text.empty() ? "" : ", ") + std::string(axes[d]);
+        }
+      prm.declare_entry(name, default_text, Patterns::MultipleSelection(choices), documentation);
     }
 
     /**

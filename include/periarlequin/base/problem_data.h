@@ -36,16 +36,6 @@ namespace PeriArlequin
                         const std::string              &name,
                         Functions::ParsedFunction<dim> &function);
 
-  /** Declare the entry "Components": a selection among x, y[, z] (all by default). */
-  template <int dim>
-  void
-  declare_component_selection(ParameterHandler &prm, const std::string &documentation);
-
-  /** The component mask selected by the entry "Components". */
-  template <int dim>
-  ComponentMask
-  parse_component_selection(ParameterHandler &prm);
-
   /** What a boundary of the box prescribes. */
   enum class BoundaryType
   {
@@ -66,10 +56,29 @@ namespace PeriArlequin
   template <int dim>
   struct BoundaryCondition
   {
+    /** The boundary id, named in the entries' documentation. */
+    unsigned int                   id   = 0;
     BoundaryType                   type = BoundaryType::free;
     ComponentMask                  components;
     std::unique_ptr<Function<dim>> function;
+
+    /** Type and Components of subsection "Boundary conditions/Boundary <id>". */
+    void
+    entries(ParameterEntries &entries);
   };
+
+  namespace Parameters
+  {
+    /** Subsection "Initial conditions": the initial condition, by registered name. */
+    template <int dim>
+    struct InitialConditionModel
+    {
+      std::string model = "function";
+
+      void
+      entries(ParameterEntries &entries);
+    };
+  } // namespace Parameters
 
   /**
    * The data of an elastodynamic problem that do not depend on its discretisation: the

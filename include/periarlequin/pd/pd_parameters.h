@@ -32,7 +32,7 @@ namespace PeriArlequin
       ComponentMask                                   components;
       std::unique_ptr<Functions::ParsedFunction<dim>> function;
 
-      /** Region and Type (Components and Function have helpers shared with the FE zone). */
+      /** Region, Type and Components (Function has a helper shared with the FE zone). */
       void
       entries(ParameterEntries &entries);
     };
