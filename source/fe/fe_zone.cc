@@ -96,11 +96,13 @@ namespace PeriArlequin
     // before, so the old ghosted vectors hold the values to keep.
     const std::vector<VectorType *> kept       = carried_vectors();
     const std::vector<VectorType>   old_values = [&] {
-      std::vector<VectorType> copies;
-      for (VectorType *v : kept)
+      // Sized first: a copy of a vector holds its owned values only, so copies that a
+      // growing std::vector made would lose the ghost values updated before.
+      std::vector<VectorType> copies(kept.size());
+      for (unsigned int k = 0; k < kept.size(); ++k)
         {
-          copies.push_back(*v);
-          copies.back().update_ghost_values();
+          copies[k] = *kept[k];
+          copies[k].update_ghost_values();
         }
       return copies;
     }();
