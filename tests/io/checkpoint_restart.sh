@@ -90,6 +90,14 @@ for _ in $(seq 6000); do
 done
 kill -KILL -- -"$pid" 2> /dev/null
 wait "$pid" 2> /dev/null
+# Open MPI may put the ranks in process groups of their own: end every process of the
+# session, and wait until none is left, before the checkpoints are copied (a rank that
+# outlived mpirun could still be writing the next slot).
+pkill -KILL -s "$pid" 2> /dev/null || true
+for _ in $(seq 200); do
+  pgrep -s "$pid" > /dev/null || break
+  sleep 0.05
+done
 grep -q "Time loop" killed.log && fail "the run ended before it was killed: the case is too short"
 [ "$(grep -c 'checkpoint written' killed.log)" -ge 2 ] || { cat killed.log; fail "no checkpoints"; }
 echo "killed after $(grep -c 'checkpoint written' killed.log) checkpoints"
