@@ -307,6 +307,34 @@ namespace PeriArlequinTests
     return worst;
   }
 
+  /**
+   * The largest difference between the columns @p columns of two energy histories over their
+   * records: absolute, or, if @p relative, over each column's largest magnitude in
+   * @p reference.
+   */
+  inline double
+  largest_column_difference(const PeriArlequin::EnergyHistory &history,
+                            const PeriArlequin::EnergyHistory &reference,
+                            const std::vector<std::string>    &columns,
+                            const bool                         relative)
+  {
+    double worst = 0;
+    for (const std::string &column : columns)
+      {
+        const auto a = history.column(column), b = reference.column(column);
+        AssertThrow(a.size() == b.size(),
+                    ExcMessage("the runs recorded different numbers of steps"));
+        double magnitude = 0, difference = 0;
+        for (unsigned int n = 0; n < a.size(); ++n)
+          {
+            magnitude  = std::max(magnitude, std::abs(b[n]));
+            difference = std::max(difference, std::abs(a[n] - b[n]));
+          }
+        worst = std::max(worst, relative && magnitude > 0 ? difference / magnitude : difference);
+      }
+    return worst;
+  }
+
   /** That the finished run @p simulator changed column @p column (the case is not vacuous). */
   template <int dim>
   void

@@ -130,23 +130,12 @@ main(int argc, char **argv)
         auto serial = make_simulator<3>(notched_plate_text(), MPI_COMM_SELF);
         serial->run();
         const auto &reference = serial->get_energy_history();
-        for (const std::string column : {"broken_bonds", "converted_cells", "pd_particles"})
-          {
-            const auto a = history.column(column), b = reference.column(column);
-            for (unsigned int n = 0; n < a.size(); ++n)
-              counts = std::max(counts, std::abs(a[n] - b[n]));
-          }
-        for (const std::string column : {"crack_area", "total_energy"})
-          {
-            const auto a = history.column(column), b = reference.column(column);
-            double     magnitude = 0, difference = 0;
-            for (unsigned int n = 0; n < a.size(); ++n)
-              {
-                magnitude  = std::max(magnitude, std::abs(b[n]));
-                difference = std::max(difference, std::abs(a[n] - b[n]));
-              }
-            energies = std::max(energies, difference / magnitude);
-          }
+        counts                = largest_column_difference(history,
+                                           reference,
+                                           {"broken_bonds", "converted_cells", "pd_particles"},
+                                           false);
+        energies =
+          largest_column_difference(history, reference, {"crack_area", "total_energy"}, true);
       }
     check_below("largest |broken bonds, converted cells, particles: all ranks - rank 0 alone|",
                 Utilities::MPI::broadcast(MPI_COMM_WORLD, counts, 0),

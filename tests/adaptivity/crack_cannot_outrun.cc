@@ -80,20 +80,12 @@ main(int argc, char **argv)
         pure->run();
 
         const auto &a = parallel->get_energy_history(), &b = serial->get_energy_history();
-        for (const std::string column : {"broken_bonds", "converted_cells", "pd_particles"})
-          {
-            const auto x = a.column(column), y = b.column(column);
-            for (unsigned int n = 0; n < x.size(); ++n)
-              mpi_difference = std::max(mpi_difference, std::abs(x[n] - y[n]));
-          }
-        for (const std::string column : {"total_energy", "crack_area"})
-          {
-            const auto x = a.column(column), y = b.column(column);
-            for (unsigned int n = 0; n < x.size(); ++n)
-              energy_difference =
-                std::max(energy_difference,
-                         std::abs(x[n] - y[n]) / std::max(std::abs(y.back()), 1e-300));
-          }
+        mpi_difference =
+          largest_column_difference(a,
+                                    b,
+                                    {"broken_bonds", "converted_cells", "pd_particles"},
+                                    false);
+        energy_difference = largest_column_difference(a, b, {"total_energy", "crack_area"}, true);
 
         const auto &reference = pure->get_energy_history();
         const auto  tip_x     = [](const PeriArlequin::EnergyHistory &h) {
