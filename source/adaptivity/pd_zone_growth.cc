@@ -4,7 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
-#include <unordered_map>
+#include <optional>
 #include <utility>
 
 namespace PeriArlequin
@@ -193,11 +193,18 @@ namespace PeriArlequin
                           PDZone<dim>                   &pd_zone,
                           BlendingField<dim>            &blending,
                           const std::function<void()>   &rebuild_coupling,
+                          TimerOutput                   &timer,
                           const std::vector<Point<dim>> &new_damage)
   {
-    const std::vector<Box<dim>> boxes = flagged_boxes(fe_zone, pd_zone, new_damage);
+    std::vector<Box<dim>> boxes;
+    {
+      TimerOutput::Scope scope(timer, "growth: criteria");
+      boxes = flagged_boxes(fe_zone, pd_zone, new_damage);
+    }
     if (boxes.empty())
       return 0;
+    std::optional<TimerOutput::Scope> phase;
+    phase.emplace(timer, "growth: PD zone");
     const MPI_Comm communicator = pd_zone.get_communicator();
 
     const auto total_energy = [&]() {
@@ -206,16 +213,30 @@ namespace PeriArlequin
     };
     const double         energy_before   = total_energy();
     const Tensor<1, dim> momentum_before = fe_zone.linear_momentum() + pd_zone.linear_momentum();
-    // The mass each particle carries itself (a slave's is lumped on the FE nodes), by id.
-    std::unordered_map<types::particle_index, double> mass_before;
-    for (unsigned int i = 0; i < pd_zone.n_owned_particles(); ++i)
-      mass_before[pd_zone.particle_ids()[i]] = pd_zone.is_slave(i) ? 0. : pd_zone.particle_mass(i);
+    // The mass each particle carries itself (a slave's is lumped on the FE nodes).
+    std::vector<double> mass_before(pd_zone.n_owned_particles());
+    for (unsigned int i = 0; i < mass_before.size(); ++i)
+      mass_before[i] = pd_zone.is_slave(i) ? 0. : pd_zone.particle_mass(i);
     blending.add_to_pd_region(boxes);
     pd_zone.set_region(blending.pd_region());
     // The particles of the grown zone (the reach of the set-up); the new ones take the FE
     // field, which still lives in the converted cells.
-    const std::vector<unsigned int> added = pd_zone.extend(
-      [&](const Point<dim> &x) { return blending.distance_to_pd_part(x) <= particle_reach; });
+    // The extent grew within the band and the particle reach of the converted cells only.
+    const double                    reach = blending.overlap_width(Point<dim>()) + particle_reach;
+    const std::vector<unsigned int> previous = pd_zone.extend(
+      [&](const Point<dim> &x) { return blending.distance_to_pd_part(x) <= particle_reach; },
+      [&](const auto &cell) {
+        const auto     corners = cell->bounding_box().get_boundary_points();
+        const Box<dim> cell_box{corners.first, corners.second};
+        for (const Box<dim> &box : boxes)
+          if (cell_box.gap(box).norm() <= reach * (1. + 1e-12))
+            return true;
+        return false;
+      });
+    std::vector<unsigned int> added;
+    for (unsigned int i = 0; i < previous.size(); ++i)
+      if (previous[i] == numbers::invalid_unsigned_int)
+        added.push_back(i);
     InterpolationOperator<dim> interpolation;
     interpolation.reinit(fe_zone, pd_zone, added);
     const auto &fe_state = fe_zone.get_state();
@@ -228,8 +249,11 @@ namespace PeriArlequin
                              interpolation.interpolate(fe_state.acceleration, r));
     pd_zone.update_ghost_displacements();
 
+    phase.emplace(timer, "growth: FE zone");
     fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); });
+    phase.emplace(timer, "growth: coupling and accelerations");
     rebuild_coupling();
+    phase.reset();
 
     // The lumped FE masses and the particle masses integrate the blending weight with
     // different quadratures, so the mass that left the FE nodes differs slightly from the
@@ -237,13 +261,11 @@ namespace PeriArlequin
     // difference, with one velocity increment.
     std::vector<unsigned int> gained;
     double                    gained_mass = 0;
-    const auto                ids         = pd_zone.particle_ids();
     for (unsigned int i = 0; i < pd_zone.n_owned_particles(); ++i)
       if (!pd_zone.is_slave(i) && !pd_zone.is_prescribed(i))
         {
-          const auto   found = mass_before.find(ids[i]);
-          const double m     = pd_zone.particle_mass(i);
-          if (found == mass_before.end() || m > found->second)
+          const double m = pd_zone.particle_mass(i);
+          if (previous[i] == numbers::invalid_unsigned_int || m > mass_before[previous[i]])
             {
               gained.push_back(i);
               gained_mass += m;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
 
 namespace PeriArlequin
 {
@@ -111,7 +110,8 @@ namespace PeriArlequin
                            GhostExchange<dim>                            &ghosts,
                            const std::function<bool(const Point<dim> &)> &extent,
                            const std::vector<PreCrack<dim>>              &pre_cracks,
-                           const std::function<bool(const Point<dim> &)> &no_fail,
+                           const std::vector<bool>                       &no_fail,
+                           const std::set<IdPair>                        &broken_pairs,
                            const Kernel                                   kernel)
   {
     const unsigned int owned = ghosts.n_owned();
@@ -169,23 +169,20 @@ namespace PeriArlequin
           held(j, k);
         }
     };
+    // One pass: about half of the stencil is stored a particle (a bond between two owned
+    // particles once), more at the ghosts; reserved at that, the arrays rarely grow.
+    const std::size_t estimate = static_cast<std::size_t>(owned) * (stencil.size() / 2 + 1);
     family_begin.assign(owned + 1, 0);
-    for (unsigned int i = 0; i < owned; ++i)
-      {
-        family_begin[i + 1] = family_begin[i];
-        visit_family(i, [&](const unsigned int j, unsigned int) {
-          family_begin[i + 1] += stored_at(i, j);
-        });
-      }
-    const std::size_t n_stored = family_begin[owned];
-    stencil_index.assign(n_stored, 0);
-    state.assign(n_stored, intact);
-    neighbor_index.assign(stencil_active ? 0 : n_stored, 0);
+    stencil_index.clear();
+    stencil_index.reserve(estimate);
+    state.clear();
+    state.reserve(estimate);
+    neighbor_index.clear();
+    if (!stencil_active)
+      neighbor_index.reserve(estimate);
     weighted_volume.assign(n_total, 0.);
-
     for (unsigned int i = 0; i < owned; ++i)
       {
-        std::size_t n = family_begin[i];
         visit_family(i, [&](const unsigned int j, const unsigned int k) {
           // The full family gives the weighted volume.
           weighted_volume[i] += stencil[k].length * stencil[k].length * stencil[k].volume;
@@ -196,18 +193,21 @@ namespace PeriArlequin
           const bool        i_first = ids[i] < ids[j];
           const Point<dim> &first   = x[i_first ? i : j];
           const Point<dim> &second  = x[i_first ? j : i];
+          BondState         bond    = intact;
           for (const auto &crack : pre_cracks)
             if (crack.cuts(first, second))
-              state[n] = broken;
-          if (state[n] != broken && (no_fail(x[i]) || no_fail(x[j])))
-            state[n] = unbreakable;
-          stencil_index[n] = static_cast<std::uint16_t>(k);
+              bond = broken;
+          if (bond != broken && (no_fail[i] || no_fail[j]))
+            bond = unbreakable;
+          state.push_back(bond);
+          stencil_index.push_back(static_cast<std::uint16_t>(k));
           if (!stencil_active)
-            neighbor_index[n] = j;
-          ++n;
+            neighbor_index.push_back(j);
         });
+        family_begin[i + 1] = state.size();
       }
     ghosts.update_ghosts(make_array_view(weighted_volume), 1);
+    mark_broken(broken_pairs, ghosts);
     if (stencil_active)
       layout.update_mask(*this);
   }
@@ -234,26 +234,30 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  BondFamilies<dim>::break_bonds(const std::set<IdPair>                &broken_pairs,
-                                 ArrayView<const types::particle_index> ids)
+  BondFamilies<dim>::mark_broken(const std::set<IdPair>   &broken_pairs,
+                                 const GhostExchange<dim> &ghosts)
   {
     // Per broken pair, the families of its owned ends: a few lookups per pair instead of one
     // per stored bond.
-    std::unordered_map<types::particle_index, unsigned int> owned_index;
-    owned_index.reserve(n_owned);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      owned_index.emplace(ids[i], i);
+    const auto ids = ghosts.ids();
     for (const auto &pair : broken_pairs)
       for (const auto &[end, other] : {pair, std::make_pair(pair.second, pair.first)})
         {
-          const auto found = owned_index.find(end);
-          if (found == owned_index.end())
+          const unsigned int i = ghosts.local_index(end);
+          if (i >= n_owned)
             continue;
-          const unsigned int i = found->second;
           for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
             if (ids[neighbor(i, n)] == other)
               state[n] = broken;
         }
+  }
+
+  template <int dim>
+  void
+  BondFamilies<dim>::break_bonds(const std::set<IdPair>   &broken_pairs,
+                                 const GhostExchange<dim> &ghosts)
+  {
+    mark_broken(broken_pairs, ghosts);
     states_changed();
   }
 

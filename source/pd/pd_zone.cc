@@ -131,7 +131,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::build_particle_structures()
+  PDZone<dim>::build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken)
   {
     ghosts.reinit();
     check_horizon_covered();
@@ -146,15 +146,17 @@ namespace PeriArlequin
     const SiteFilter extent_in_mesh = [&](const Point<dim> &x) {
       return extent(x) && (!locator || locator->holds(x));
     };
-    bonds.build(
-      lattice,
-      ghosts,
-      extent_in_mesh,
-      parameters.pre_cracks,
-      [this](const Point<dim> &x) {
-        return parameters.no_fail_region.contains(x) || blending_weight(x) > 0;
-      },
-      force_kernel(parameters.force_kernel, *model));
+    const auto        x = ghosts.reference_positions();
+    std::vector<bool> no_fail(ghosts.n_total());
+    for (unsigned int i = 0; i < no_fail.size(); ++i)
+      no_fail[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
+    bonds.build(lattice,
+                ghosts,
+                extent_in_mesh,
+                parameters.pre_cracks,
+                no_fail,
+                broken,
+                force_kernel(parameters.force_kernel, *model));
     find_bonds_near_overlap();
     model->initialize(material, bonds);
     new_breaks.clear();

@@ -6,7 +6,6 @@
 
 #include <iterator>
 #include <optional>
-#include <unordered_map>
 
 namespace PeriArlequin
 {
@@ -121,11 +120,14 @@ namespace PeriArlequin
   template <int dim>
   void
   PDZone<dim>::insert_particles(
-    const std::function<bool(const Point<dim> &, types::particle_index)> &accept)
+    const std::function<bool(const Point<dim> &, types::particle_index)> &accept,
+    const CellFilter                                                     &cells)
   {
     if (general_cells)
       vertex_to_cells = GridTools::vertex_to_cell_map(triangulation);
     const auto for_each_site = [&](const auto &cell, const auto &visit) {
+      if (cells && !cells(cell))
+        return;
       const auto [lower, upper] = cell_bounds(cell);
       lattice.for_each_site_in(lower, upper, [&](const auto &site) {
         const Point<dim> x = lattice.position(site);
@@ -157,47 +159,41 @@ namespace PeriArlequin
 
   template <int dim>
   std::vector<unsigned int>
-  PDZone<dim>::extend(const SiteFilter &grown_extent)
+  PDZone<dim>::extend(const SiteFilter &grown_extent, const CellFilter &may_hold_new_sites)
   {
     // What the rebuild must keep, by particle id: kinematics, applied forces (the next step's
     // work increment starts from them) and the bonds broken so far.
-    const unsigned int                                      n_old   = ghosts.n_owned();
-    const auto                                              old_ids = ghosts.ids();
-    std::unordered_map<types::particle_index, unsigned int> old_index;
-    for (unsigned int i = 0; i < n_old; ++i)
-      old_index[old_ids[i]] = i;
-    const ParticleState<dim>          old_state         = state;
-    const std::vector<Tensor<1, dim>> old_applied_force = applied_force;
-    const auto                        broken            = bonds.broken_bonds(old_ids);
+    const unsigned int                       n_old        = ghosts.n_owned();
+    const auto                               old_ids_view = ghosts.ids();
+    const std::vector<types::particle_index> old_ids(old_ids_view.begin(),
+                                                     old_ids_view.begin() + n_old);
+    const ParticleState<dim>                 old_state         = state;
+    const std::vector<Tensor<1, dim>>        old_applied_force = applied_force;
+    const auto                               broken            = bonds.broken_bonds(old_ids_view);
 
     for ([[maybe_unused]] const Point<dim> &x : ghosts.reference_positions())
       Assert(grown_extent(x), ExcMessage("PDZone::extend(): the extent must only grow."));
     extent = grown_extent;
-    insert_particles([&](const Point<dim> &x, const types::particle_index id) {
-      return old_index.count(id) == 0 && extent(x);
-    });
-    build_particle_structures();
+    // A site of an owned cell holds an owned particle already if the old numbering knows it.
+    insert_particles(
+      [&](const Point<dim> &x, const types::particle_index id) {
+        return ghosts.local_index(id) == numbers::invalid_unsigned_int && extent(x);
+      },
+      may_hold_new_sites);
+    build_particle_structures(broken);
 
-    const auto ids = ghosts.ids();
-    bonds.break_bonds(broken, ids);
-
-    std::vector<unsigned int> added;
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+    std::vector<unsigned int> previous(ghosts.n_owned(), numbers::invalid_unsigned_int);
+    for (unsigned int j = 0; j < n_old; ++j)
       {
-        const auto found = old_index.find(ids[i]);
-        if (found == old_index.end())
-          {
-            added.push_back(i);
-            continue;
-          }
-        const unsigned int j     = found->second;
+        const unsigned int i     = ghosts.local_index(old_ids[j]);
+        previous[i]              = j;
         state.displacements()[i] = old_state.displacements()[j];
         state.velocities()[i]    = old_state.velocities()[j];
         state.accelerations()[i] = old_state.accelerations()[j];
         applied_force[i]         = old_applied_force[j];
       }
     update_ghost_displacements();
-    return added;
+    return previous;
   }
 
   template class PDZone<2>;

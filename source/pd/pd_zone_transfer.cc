@@ -145,7 +145,7 @@ namespace PeriArlequin
         for (const types::particle_index partner : found->second.broken_partners)
           broken.emplace(std::minmax(ids[i], partner));
       }
-    bonds.break_bonds(broken, ids);
+    bonds.break_bonds(broken, ghosts);
     update_ghost_displacements();
   }
 

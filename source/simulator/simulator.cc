@@ -128,6 +128,7 @@ namespace PeriArlequin
         rebuild_coupling();
         integrator->initialize();
       },
+      timer,
       new_damage);
     if (n_cells == 0)
       return 0;

@@ -9,6 +9,7 @@
 #include <periarlequin/pd/pd_zone.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <functional>
 #include <memory>
@@ -98,6 +99,7 @@ namespace PeriArlequin
      * Convert the cells the criterion flags and the FE cells within the conversion distance
      * (GrowthContext) of @p new_damage (collective). @p rebuild_coupling rebuilds what
      * depends on the zones (contact, coupling) and the accelerations of the current state.
+     * Each phase is timed in @p timer (sections "growth: ...").
      * Returns the number of cells converted over all ranks (0: nothing changed).
      */
     unsigned int
@@ -105,6 +107,7 @@ namespace PeriArlequin
          PDZone<dim>                   &pd_zone,
          BlendingField<dim>            &blending,
          const std::function<void()>   &rebuild_coupling,
+         TimerOutput                   &timer,
          const std::vector<Point<dim>> &new_damage = {});
 
     /** The distances and speeds the growth works with (set by initialize()). */

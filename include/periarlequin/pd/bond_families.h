@@ -40,6 +40,9 @@ namespace PeriArlequin
   class BondFamilies
   {
   public:
+    /** The particle ids of a bond's ends, the lower first. */
+    using IdPair = std::pair<types::particle_index, types::particle_index>;
+
     /** One lattice offset within the horizon. */
     struct StencilEntry
     {
@@ -81,17 +84,19 @@ namespace PeriArlequin
     /**
      * The families of the owned particles of @p ghosts on @p lattice (the stencil built):
      * every stencil neighbour that is held, owned or ghost. A bond cut by one of
-     * @p pre_cracks starts broken, an intact one with an end where @p no_fail is true cannot
-     * break. A neighbour that @p extent accepts but that is not held means the ghost layer
-     * does not cover the horizon: an error. Fills weighted_volume for owned particles and
-     * ghosts.
+     * @p pre_cracks starts broken, an intact one with an end whose @p no_fail is true (one
+     * entry per owned and ghost particle) cannot break. A neighbour that @p extent accepts but that
+     * is not held means the ghost layer does not cover the horizon: an error. The bonds whose ends'
+     * ids are a pair in @p broken_pairs start broken (a zone rebuilt with the bonds broken so far).
+     * Fills weighted_volume for owned particles and ghosts.
      */
     void
     build(const Lattice<dim>                            &lattice,
           GhostExchange<dim>                            &ghosts,
           const std::function<bool(const Point<dim> &)> &extent,
           const std::vector<PreCrack<dim>>              &pre_cracks,
-          const std::function<bool(const Point<dim> &)> &no_fail,
+          const std::vector<bool>                       &no_fail,
+          const std::set<IdPair>                        &broken_pairs,
           const Kernel                                   kernel = Kernel::automatic);
 
     /** Whether the models loop over the stencil layout (else over the CSR arrays). */
@@ -110,13 +115,15 @@ namespace PeriArlequin
     void
     states_changed();
 
-    using IdPair = std::pair<types::particle_index, types::particle_index>;
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
     std::set<IdPair>
     broken_bonds(ArrayView<const types::particle_index> ids) const;
-    /** Break the stored bonds whose ends (ids @p ids) are a pair in @p broken. */
+    /**
+     * Break the stored bonds whose ends' ids (@p ghosts numbers them) are a pair in
+     * @p broken_pairs.
+     */
     void
-    break_bonds(const std::set<IdPair> &broken, ArrayView<const types::particle_index> ids);
+    break_bonds(const std::set<IdPair> &broken_pairs, const GhostExchange<dim> &ghosts);
 
     unsigned int n_owned = 0;
     /** Owned plus ghost particles. */
@@ -178,6 +185,10 @@ namespace PeriArlequin
     damage() const;
 
   private:
+    /** Set the state of the bonds in @p broken_pairs to broken, without refreshing the layout. */
+    void
+    mark_broken(const std::set<IdPair> &broken_pairs, const GhostExchange<dim> &ghosts);
+
     StencilLayout<dim> layout;
     bool               stencil_active = false;
     /** The neighbour of every stored bond, only with the bond lists (else empty). */

@@ -57,6 +57,9 @@ namespace PeriArlequin
   public:
     /** Which lattice sites hold a particle. */
     using SiteFilter = std::function<bool(const Point<dim> &)>;
+    /** Selects cells by their iterator. */
+    using CellFilter =
+      std::function<bool(const typename Triangulation<dim>::active_cell_iterator &)>;
     /** The Arlequin blending weight alpha(x) (0: pure PD). */
     using WeightFunction = std::function<double(const Point<dim> &)>;
 
@@ -329,12 +332,15 @@ namespace PeriArlequin
      * @p grown_extent, which must accept every site that holds a particle (particles are
      * never removed). Existing particles keep their kinematics and their broken bonds; ghosts,
      * bonds (with pre-cracks and no-fail regions), model constants, blending weights and
-     * prescribed particles are rebuilt as set-up builds them. The new particles start at
-     * rest and undeformed; returns their local numbers, for the caller to set their state.
+     * prescribed particles are rebuilt as set-up builds them. Returns, for every owned
+     * particle, its local number before (numbers::invalid_unsigned_int: a new particle, at
+     * rest and undeformed, for the caller to set its state).
+     * Only the cells that @p may_hold_new_sites accepts are searched for new sites (by
+     * default all: a growth that knows where the extent grew costs what changed).
      * A repartition in between must have been completed by unpack_after_repartition().
      */
     std::vector<unsigned int>
-    extend(const SiteFilter &grown_extent);
+    extend(const SiteFilter &grown_extent, const CellFilter &may_hold_new_sites = CellFilter());
 
     /**
      * Before Triangulation::repartition(): attach the particles and the state they carry
@@ -416,14 +422,18 @@ namespace PeriArlequin
     void
     receive_particle_state();
     /**
-     * Insert a particle at every site of a locally owned cell that @p accept takes, given
-     * its position and lattice id.
+     * Insert a particle at every site of a locally owned cell (that @p cells accepts, if
+     * given) that @p accept takes, given its position and lattice id.
      */
     void
-    insert_particles(const std::function<bool(const Point<dim> &, types::particle_index)> &accept);
-    /** Local numbers, ghosts, bonds, weights, model and prescribed particles. */
+    insert_particles(const std::function<bool(const Point<dim> &, types::particle_index)> &accept,
+                     const CellFilter &cells = CellFilter());
+    /**
+     * Local numbers, ghosts, bonds, weights, model and prescribed particles; the bonds between
+     * the particle ids of a pair in @p broken start broken.
+     */
     void
-    build_particle_structures();
+    build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken = {});
     void
     check_horizon_covered() const;
     /**
