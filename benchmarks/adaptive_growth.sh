@@ -66,7 +66,7 @@ if command -v gnuplot > /dev/null; then
     sep=""
     for k in "${!builds[@]}"; do
       for n in $(awk -F, -v b=$((k + 1)) '$1 == b {print $2}' adaptive_growth.csv | sort -un); do
-        printf "%s'adaptive_growth.csv' using (\$1 == %d && \$2 == %d ? \$3 : NaN):6 with linespoints title 'build %d, %d particles'" \
+        printf "%s\"< awk -F, '\$1 == %d && \$2 == %d' adaptive_growth.csv\" using 3:6 with linespoints title 'build %d, %d particles'" \
           "$sep" $((k + 1)) "$n" $((k + 1)) "$n"
         sep=", "
       done

@@ -16,6 +16,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -83,7 +84,9 @@ main(int argc, char **argv)
                 << " LATTICE_SPACING ZONE_LENGTH CELLS_PER_SIDE GROWTHS [STEPS_BETWEEN]\n";
       return 1;
     }
-  const double       dx = std::stod(argv[1]), zone_length = std::stod(argv[2]);
+  const double dx = std::stod(argv[1]);
+  // Whole FE cells: the zone's edge on a cell face.
+  const double       zone_length = cell_size * std::round(std::stod(argv[2]) / cell_size);
   const unsigned int side = std::stoi(argv[3]), growths = std::stoi(argv[4]);
   const unsigned int between = argc > 5 ? std::stoi(argv[5]) : 10;
   // Room for the patches, the band and the slave layer beyond the last one.
@@ -113,10 +116,18 @@ main(int argc, char **argv)
        << "subsection Output\n  set Output interval = 0\n  set Energy interval = 0\n"
        << "  set Progress interval = 0\n  set Print timing summary = true\nend\n";
 
-  ParameterHandler prm;
-  PeriArlequin::Simulator<2>::declare_parameters(prm);
-  prm.parse_input_from_string(text.str());
-  PeriArlequin::Simulator<2> simulator(prm, MPI_COMM_WORLD);
-  simulator.run();
+  try
+    {
+      ParameterHandler prm;
+      PeriArlequin::Simulator<2>::declare_parameters(prm);
+      prm.parse_input_from_string(text.str());
+      PeriArlequin::Simulator<2> simulator(prm, MPI_COMM_WORLD);
+      simulator.run();
+    }
+  catch (const std::exception &error)
+    {
+      std::cerr << error.what() << std::endl;
+      return 1;
+    }
   return 0;
 }
