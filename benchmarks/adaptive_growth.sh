@@ -9,7 +9,8 @@
 #   benchmarks/adaptive_growth.sh [build-dir] [other-build-dir]
 #
 # With a second build (the same program built from another commit), both are run alternated
-# and the ratio of their growth costs is printed. Writes adaptive_growth.csv and, with
+# and the ratio of their growth costs is printed; LABELS names the builds in the figure
+# ("build 1,build 2"). Writes adaptive_growth.csv and, with
 # gnuplot, adaptive_growth.png (growth cost in steps against the converted cells) in the
 # current directory.
 set -euo pipefail
@@ -20,6 +21,7 @@ builds=("$(cd "${1:-$top/build}" && pwd)")
 repeats=${REPEATS:-3}
 zones=${ZONES:-"0.032 0.064 0.126"}
 sides=${SIDES:-"1 3 6"}
+IFS=, read -r -a labels <<< "${LABELS:-build 1,build 2}"
 growths=5
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -30,7 +32,7 @@ measure() { # build zone side
   (cd "$work" && "$1/periarlequin-growth-cost" 2.5e-4 "$2" "$3" "$growths") | awk -v g="$growths" '
     /PD particles/ {for (i = 1; i <= NF; ++i) if ($i == "PD") n = $(i - 1)}
     /^Time loop:/ {steps = $3; loop = $6}
-    /^\| PD zone growth/ {split($0, f, "|"); split(f[4], t, " "); growth = t[1]}
+    /^\| PD zone growth/ {split($0, f, "|"); split(f[6], t, " "); growth = t[1]}  # the slowest rank
     END {printf "%d %.3f %.3f\n", n, 1e3 * growth / g, 1e3 * (loop - growth) / steps}'
 }
 
@@ -66,8 +68,8 @@ if command -v gnuplot > /dev/null; then
     sep=""
     for k in "${!builds[@]}"; do
       for n in $(awk -F, -v b=$((k + 1)) '$1 == b {print $2}' adaptive_growth.csv | sort -un); do
-        printf "%s\"< awk -F, '\$1 == %d && \$2 == %d' adaptive_growth.csv\" using 3:6 with linespoints title 'build %d, %d particles'" \
-          "$sep" $((k + 1)) "$n" $((k + 1)) "$n"
+        printf "%s\"< awk -F, '\$1 == %d && \$2 == %d' adaptive_growth.csv\" using 3:6 with linespoints title '%s, %d particles'" \
+          "$sep" $((k + 1)) "$n" "${labels[$k]}" "$n"
         sep=", "
       done
     done

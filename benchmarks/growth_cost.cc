@@ -32,7 +32,7 @@ namespace
    * the patch flagged before (the first at "Start"): a tip that runs ahead by a patch a check.
    */
   template <int dim>
-  class AdvancingPatch : public PeriArlequin::ConversionCriterion<dim>
+  class AdvancingPatch : public PeriArlequin::CellCentreCriterion<dim>
   {
   public:
     static void
@@ -51,17 +51,19 @@ namespace
 
     void
     mark_cells(const PeriArlequin::FEZone<dim> &fe_zone,
-               const PeriArlequin::PDZone<dim> &,
-               std::vector<bool> &convert) const override
+               const PeriArlequin::PDZone<dim> &pd_zone,
+               std::vector<bool>               &convert) const override
     {
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const Point<dim> c                 = cell->center();
-            convert[cell->active_cell_index()] = c[0] > next_left && c[0] < next_left + side &&
-                                                 std::abs(c[1] - 0.5 * plate_height) < 0.5 * side;
-          }
+      PeriArlequin::CellCentreCriterion<dim>::mark_cells(fe_zone, pd_zone, convert);
       next_left += side;
+    }
+
+  protected:
+    bool
+    converts(const Point<dim> &c) const override
+    {
+      return c[0] > next_left && c[0] < next_left + side &&
+             std::abs(c[1] - 0.5 * plate_height) < 0.5 * side;
     }
 
   private:

@@ -38,6 +38,24 @@ namespace PeriArlequinTests
     return std::make_unique<PeriArlequin::Simulator<dim>>(prm, communicator);
   }
 
+  /**
+   * Parameter text of subsection "Boundary conditions": a traction of @p stress [Pa] pulling
+   * the y faces (boundary ids 2 and 3) apart, the others free.
+   */
+  inline std::string
+  opposite_y_tractions(const double stress, const unsigned int dim)
+  {
+    std::ostringstream text;
+    text << "subsection Boundary conditions\n";
+    for (const unsigned int id : {2, 3})
+      text << "  subsection Boundary " << id
+           << "\n    set Type = traction\n    subsection Function\n"
+           << "      set Function expression = 0; " << (id == 2 ? -stress : stress)
+           << (dim == 3 ? "; 0" : "") << "\n    end\n  end\n";
+    text << "end\n";
+    return text.str();
+  }
+
   /** Parameter text that silences files and progress: the deterministic test mode. */
   inline std::string
   quiet_output()

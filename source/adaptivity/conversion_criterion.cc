@@ -240,8 +240,21 @@ namespace PeriArlequin
       }
   }
 
+  template <int dim>
+  void
+  CellCentreCriterion<dim>::mark_cells(const FEZone<dim> &fe_zone,
+                                       const PDZone<dim> &,
+                                       std::vector<bool> &convert) const
+  {
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        convert[cell->active_cell_index()] = converts(cell->center());
+  }
+
   template class ConversionCriterion<2>;
   template class ConversionCriterion<3>;
+  template class CellCentreCriterion<2>;
+  template class CellCentreCriterion<3>;
   template class DamageProximityCriterion<2>;
   template class DamageProximityCriterion<3>;
   template class StrainCriterion<2>;

@@ -26,21 +26,13 @@ namespace
 {
   /** Flags the cells whose centre lies in [0.08, 0.12] x [-0.08, 0.08] x [-0.04, 0.04]. */
   template <int dim>
-  class LayerConversion : public PeriArlequin::ConversionCriterion<dim>
+  class LayerConversion : public PeriArlequin::CellCentreCriterion<dim>
   {
-  public:
-    void
-    mark_cells(const PeriArlequin::FEZone<dim> &fe_zone,
-               const PeriArlequin::PDZone<dim> &,
-               std::vector<bool> &convert) const override
+  protected:
+    bool
+    converts(const Point<dim> &c) const override
     {
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const Point<dim> c = cell->center();
-            convert[cell->active_cell_index()] =
-              c[0] > 0.08 && c[0] < 0.12 && std::abs(c[1]) < 0.08 && std::abs(c[dim - 1]) < 0.04;
-          }
+      return c[0] > 0.08 && c[0] < 0.12 && std::abs(c[1]) < 0.08 && std::abs(c[dim - 1]) < 0.04;
     }
   };
 } // namespace
@@ -82,12 +74,7 @@ notched_plate_text()
        << "  set Lattice spacing = 1e-3\n  set Fracture = true\n"
        << "  set Critical energy release rate = 3.8\n"
        << "  set Pre-cracks = 0, 0.02, 0 : 0.03, 0, 0 : 0, 0, 0.008\nend\n"
-       << "subsection Boundary conditions\n";
-  for (const unsigned int id : {2, 3})
-    text << "  subsection Boundary " << id << "\n    set Type = traction\n    subsection Function\n"
-         << "      set Function expression = 0; " << (id == 2 ? "-4e6" : "4e6")
-         << "; 0\n    end\n  end\n";
-  text << "end\n"
+       << opposite_y_tractions(4e6, 3)
        << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
        << "  set Overlap width = 0.008\n  set Damping constant = 10\nend\n"
        << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\nend\n"

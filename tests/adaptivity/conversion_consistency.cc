@@ -33,21 +33,13 @@ namespace
 {
   /** Flags the cells whose centre lies in [0.06, 0.10] x [-0.06, 0.06]. */
   template <int dim>
-  class BoxConversion : public PeriArlequin::ConversionCriterion<dim>
+  class BoxConversion : public PeriArlequin::CellCentreCriterion<dim>
   {
-  public:
-    void
-    mark_cells(const PeriArlequin::FEZone<dim> &fe_zone,
-               const PeriArlequin::PDZone<dim> &,
-               std::vector<bool> &convert) const override
+  protected:
+    bool
+    converts(const Point<dim> &c) const override
     {
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const Point<dim> c = cell->center();
-            convert[cell->active_cell_index()] =
-              c[0] > 0.06 && c[0] < 0.10 && std::abs(c[1]) < 0.06;
-          }
+      return c[0] > 0.06 && c[0] < 0.10 && std::abs(c[1]) < 0.06;
     }
   };
 } // namespace

@@ -33,17 +33,13 @@ namespace
 {
   /** Flags the cells whose centre lies in [-0.6, -0.4]. */
   template <int dim>
-  class StripConversion : public PeriArlequin::ConversionCriterion<dim>
+  class StripConversion : public PeriArlequin::CellCentreCriterion<dim>
   {
-  public:
-    void
-    mark_cells(const PeriArlequin::FEZone<dim> &fe_zone,
-               const PeriArlequin::PDZone<dim> &,
-               std::vector<bool> &convert) const override
+  protected:
+    bool
+    converts(const Point<dim> &c) const override
     {
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
-          convert[cell->active_cell_index()] = cell->center()[0] > -0.6 && cell->center()[0] < -0.4;
+      return c[0] > -0.6 && c[0] < -0.4;
     }
   };
 } // namespace

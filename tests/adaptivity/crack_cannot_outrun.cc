@@ -45,12 +45,7 @@ fast_crack_text(const std::string &zone)
                                  "  set Conversion criterion = strain\n"
                                  "  subsection strain\n    set Strain = 1\n  end\n")
          << "end\n";
-  text << "subsection Boundary conditions\n";
-  for (const unsigned int id : {2, 3})
-    text << "  subsection Boundary " << id << "\n    set Type = traction\n    subsection Function\n"
-         << "      set Function expression = 0; " << (id == 2 ? "-4e6" : "4e6")
-         << "\n    end\n  end\n";
-  text << "end\n"
+  text << opposite_y_tractions(4e6, 2)
        << "subsection Time\n  set Time step = 4e-8\n  set End time = 2e-5\nend\n"
        << quiet_output() << "subsection Output\n  set Energy interval = 25\nend\n"
        << "subsection Postprocess\n  set List of postprocessors = energies, cracks, zone sizes\n"

@@ -34,12 +34,7 @@ growing_crack_text(const double imbalance_tolerance)
        << "  set Lattice spacing = 6.25e-4\n  set Horizon factor = 3.2\n"
        << "  set Fracture = true\n  set Critical energy release rate = 3.8\n"
        << "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
-       << "subsection Boundary conditions\n";
-  for (const unsigned int id : {2, 3})
-    text << "  subsection Boundary " << id << "\n    set Type = traction\n    subsection Function\n"
-         << "      set Function expression = 0; " << (id == 2 ? "-2e6" : "2e6")
-         << "\n    end\n  end\n";
-  text << "end\n"
+       << opposite_y_tractions(2e6, 2)
        << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
        << "  set Overlap width = 0.005\n  set Damping constant = 10\nend\n"
        << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\n"

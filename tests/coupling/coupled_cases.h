@@ -269,13 +269,7 @@ namespace PeriArlequinTests
          << "subsection Peridynamics\n  set Region = 0, " << (coupled ? a : 0.) << " : 0.1, "
          << (coupled ? b : 0.04) << "\n  set Lattice spacing = " << dx
          << "\n  set Horizon factor = 3.2\nend\n"
-         << "subsection Boundary conditions\n";
-    for (const unsigned int id : {2, 3})
-      text << "  subsection Boundary " << id
-           << "\n    set Type = traction\n    subsection Function\n"
-           << "      set Function expression = 0; " << (id == 2 ? -stress : stress)
-           << "\n    end\n  end\n";
-    text << "end\n";
+         << opposite_y_tractions(stress, 2);
     if (coupled)
       {
         std::ostringstream overlap_text, fe_text;

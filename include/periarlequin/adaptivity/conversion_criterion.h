@@ -88,6 +88,26 @@ namespace PeriArlequin
                std::vector<bool> &convert) const = 0;
   };
 
+  /**
+   * A criterion that decides by the centre of a cell alone (a region known in advance, a
+   * prescribed sequence of growths): derive and say in converts() which centres become PD.
+   */
+  template <int dim>
+  class CellCentreCriterion : public ConversionCriterion<dim>
+  {
+  public:
+    /** Flag the locally owned cells whose centre converts() accepts. */
+    void
+    mark_cells(const FEZone<dim> &fe_zone,
+               const PDZone<dim> &pd_zone,
+               std::vector<bool> &convert) const override;
+
+  protected:
+    /** Should the cell with centre @p centre be PD now? */
+    virtual bool
+    converts(const Point<dim> &centre) const = 0;
+  };
+
   /** The registry of conversion criteria. */
   template <int dim>
   using ConversionCriterionRegistry = PluginRegistry<ConversionCriterion<dim>>;
