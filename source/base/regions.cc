@@ -112,6 +112,178 @@ namespace PeriArlequin
     return nearest;
   }
 
+  namespace
+  {
+    /** Call @p visit(bin) for every bin of the grid range [@p lower, @p upper] (inclusive). */
+    template <int dim, typename Visitor>
+    void
+    for_each_bin(const std::array<int, dim> &lower,
+                 const std::array<int, dim> &upper,
+                 const Visitor              &visit)
+    {
+      std::array<int, dim> bin = lower;
+      while (true)
+        {
+          visit(bin);
+          unsigned int d = 0;
+          for (; d < dim; ++d)
+            {
+              if (++bin[d] <= upper[d])
+                break;
+              bin[d] = lower[d];
+            }
+          if (d == dim)
+            return;
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  RegionDistance<dim>::RegionDistance(const Region<dim> &region)
+    : boxes(region.boxes)
+  {
+    // A few boxes are scanned; so is a region without extent.
+    if (boxes.size() <= 8)
+      return;
+    Box<dim> hull = boxes[0];
+    for (const auto &box : boxes)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          hull.lower[d] = std::min(hull.lower[d], box.lower[d]);
+          hull.upper[d] = std::max(hull.upper[d], box.upper[d]);
+        }
+    double volume = 1, longest = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        volume *= hull.upper[d] - hull.lower[d];
+        longest = std::max(longest, hull.upper[d] - hull.lower[d]);
+      }
+    if (!(longest > 0))
+      return;
+    // About four bins a box (a flat hull: along its longest side), at most sixteen.
+    const double n_boxes = boxes.size();
+    bin_width = std::max(std::pow(volume / (4. * n_boxes), 1. / dim), longest / (4. * n_boxes));
+    std::size_t n_all = 0;
+    do
+      {
+        n_all = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n_bins[d] =
+              static_cast<unsigned int>(std::floor((hull.upper[d] - hull.lower[d]) / bin_width)) +
+              1;
+            n_all *= n_bins[d];
+          }
+        if (n_all > 16 * boxes.size())
+          bin_width *= 2;
+      }
+    while (n_all > 16 * boxes.size());
+    origin = hull.lower;
+
+    // Each box is listed in the bins it touches and their neighbours: rounding at a bin's
+    // edge cannot hide a box from the search.
+    const auto bin_range = [&](const Box<dim> &box) {
+      std::array<int, dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const int last = static_cast<int>(n_bins[d]) - 1;
+          lower[d] =
+            std::clamp(static_cast<int>(std::floor((box.lower[d] - origin[d]) / bin_width)) - 1,
+                       0,
+                       last);
+          upper[d] =
+            std::clamp(static_cast<int>(std::floor((box.upper[d] - origin[d]) / bin_width)) + 1,
+                       0,
+                       last);
+        }
+      return std::make_pair(lower, upper);
+    };
+    const auto index = [&](const std::array<int, dim> &bin) {
+      std::size_t i = 0;
+      for (unsigned int d = dim; d-- > 0;)
+        i = i * n_bins[d] + bin[d];
+      return i;
+    };
+    bin_begin.assign(n_all + 1, 0);
+    for (const auto &box : boxes)
+      {
+        const auto [lower, upper] = bin_range(box);
+        for_each_bin<dim>(lower, upper, [&](const auto &bin) { ++bin_begin[index(bin) + 1]; });
+      }
+    for (std::size_t b = 0; b < n_all; ++b)
+      bin_begin[b + 1] += bin_begin[b];
+    bin_boxes.resize(bin_begin.back());
+    std::vector<unsigned int> filled(bin_begin.begin(), bin_begin.end() - 1);
+    for (unsigned int k = 0; k < boxes.size(); ++k)
+      {
+        const auto [lower, upper] = bin_range(boxes[k]);
+        for_each_bin<dim>(lower, upper, [&](const auto &bin) {
+          bin_boxes[filled[index(bin)]++] = k;
+        });
+      }
+  }
+
+  template <int dim>
+  double
+  RegionDistance<dim>::distance(const Point<dim> &p) const
+  {
+    if (bin_width == 0)
+      return Region<dim>{boxes}.distance(p);
+    std::array<int, dim> centre;
+    int                  last_ring = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const int last = static_cast<int>(n_bins[d]) - 1;
+        centre[d] =
+          std::clamp(static_cast<int>(std::floor((p[d] - origin[d]) / bin_width)), 0, last);
+        last_ring = std::max({last_ring, centre[d], last - centre[d]});
+      }
+    // After ring r (the bins r bins from the point's bin, the nearest bin of the grid if the
+    // point lies outside it), every box not met is at least r bin widths away. A point far
+    // from every box would visit more bins than there are boxes: it scans them instead.
+    double      nearest = std::numeric_limits<double>::infinity();
+    std::size_t visited = 0;
+    const auto  visit   = [&](const std::array<int, dim> &bin) {
+      std::size_t i = 0;
+      for (unsigned int d = dim; d-- > 0;)
+        i = i * n_bins[d] + bin[d];
+      for (unsigned int b = bin_begin[i]; b < bin_begin[i + 1]; ++b)
+        nearest = std::min(nearest, boxes[bin_boxes[b]].distance(p));
+      ++visited;
+    };
+    for (int r = 0; r <= last_ring; ++r)
+      {
+        if (visited > boxes.size())
+          return std::min(nearest, Region<dim>{boxes}.distance(p));
+        // The ring's faces: bin[d] = centre[d] -+ r, the axes before d strictly inside the
+        // ring (their faces are done), the axes after d across it.
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int end = 0; end < 2; ++end)
+            {
+              const int side = end == 0 ? -r : r;
+              if (r == 0 && (d > 0 || end > 0))
+                continue;
+              std::array<int, dim> lower, upper;
+              bool                 empty = false;
+              for (unsigned int e = 0; e < dim; ++e)
+                {
+                  const int inset = e < d ? 1 : 0;
+                  lower[e]        = std::max(centre[e] - r + inset, 0);
+                  upper[e] = std::min(centre[e] + r - inset, static_cast<int>(n_bins[e]) - 1);
+                  if (e == d)
+                    lower[e] = upper[e] = centre[e] + side;
+                  empty = empty || lower[e] > upper[e] || lower[e] < 0 ||
+                          upper[e] >= static_cast<int>(n_bins[e]);
+                }
+              if (!empty)
+                for_each_bin<dim>(lower, upper, visit);
+            }
+        if (nearest <= r * bin_width)
+          return nearest;
+      }
+    return nearest;
+  }
+
   template <int dim>
   bool
   Region<dim>::contains(const Point<dim> &p, const double tolerance) const
@@ -271,6 +443,8 @@ namespace PeriArlequin
   template struct Box<3>;
   template struct Region<2>;
   template struct Region<3>;
+  template class RegionDistance<2>;
+  template class RegionDistance<3>;
   template struct PreCrack<2>;
   template struct PreCrack<3>;
 } // namespace PeriArlequin

@@ -142,6 +142,7 @@ namespace PeriArlequin
     , overlap_text(coupling.overlap_text)
     , fe_region_text(coupling.fe_region_text)
     , band_width(coupling.overlap_width)
+    , distance_to_pure_pd(pure_pd_region)
   {
     if (pure_pd.empty())
       throw_invalid_parameter("Peridynamics/Region",
@@ -241,7 +242,7 @@ namespace PeriArlequin
   double
   BlendingField<dim>::value(const Point<dim> &x) const
   {
-    const double l1 = pure_pd.distance(x);
+    const double l1 = distance_to_pure_pd.distance(x);
     if (l1 == 0)
       return 0.;
     const double l2 = band_width > 0 ? std::max(band_width - l1, 0.) : pure_fe.distance(x);
@@ -257,7 +258,7 @@ namespace PeriArlequin
   BlendingField<dim>::in_overlap(const Point<dim> &x) const
   {
     if (band_width > 0)
-      return pure_pd.distance(x) <= band_width * (1. + 1e-12);
+      return distance_to_pure_pd.distance(x) <= band_width * (1. + 1e-12);
     return overlap_region.contains(x, 1e-12 * overlap_width(x));
   }
 
@@ -265,7 +266,7 @@ namespace PeriArlequin
   double
   BlendingField<dim>::overlap_width(const Point<dim> &x) const
   {
-    return band_width > 0 ? band_width : pure_pd.distance(x) + pure_fe.distance(x);
+    return band_width > 0 ? band_width : distance_to_pure_pd.distance(x) + pure_fe.distance(x);
   }
 
   template <int dim>
@@ -273,8 +274,8 @@ namespace PeriArlequin
   BlendingField<dim>::distance_to_pd_part(const Point<dim> &x) const
   {
     if (band_width > 0)
-      return std::max(pure_pd.distance(x) - band_width, 0.);
-    return std::min(pure_pd.distance(x), overlap_region.distance(x));
+      return std::max(distance_to_pure_pd.distance(x) - band_width, 0.);
+    return std::min(distance_to_pure_pd.distance(x), overlap_region.distance(x));
   }
 
   template <int dim>
@@ -298,6 +299,7 @@ namespace PeriArlequin
     Assert(is_band(), ExcMessage("Only a band overlap follows a growing PD region."));
     pure_pd.boxes.insert(pure_pd.boxes.end(), boxes.begin(), boxes.end());
     pure_pd.coalesce(length_tolerance);
+    distance_to_pure_pd = RegionDistance<dim>(pure_pd);
   }
 
   template <int dim>
@@ -305,7 +307,8 @@ namespace PeriArlequin
   BlendingField<dim>::set_pd_region(const Region<dim> &grown)
   {
     Assert(is_band(), ExcMessage("Only a band overlap follows a growing PD region."));
-    pure_pd = grown;
+    pure_pd             = grown;
+    distance_to_pure_pd = RegionDistance<dim>(pure_pd);
   }
 
   template class BlendingField<2>;

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -169,6 +170,27 @@ namespace PeriArlequin
           held(j, k);
         }
     };
+    // A bond can cross a pre-crack only if its ends lie within a bond length of the crack's
+    // bounding box: the crack is tested for those bonds alone.
+    double longest_bond = 0;
+    for (const auto &entry : stencil)
+      longest_bond = std::max(longest_bond, entry.length);
+    std::vector<std::uint8_t> near_crack(n_total, 0);
+    for (const auto &crack : pre_cracks)
+      {
+        Box<dim> box{crack.origin, crack.origin};
+        for (const auto &corner : {crack.origin + crack.edge_a,
+                                   crack.origin + crack.edge_b,
+                                   crack.origin + crack.edge_a + crack.edge_b})
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              box.lower[d] = std::min(box.lower[d], corner[d]);
+              box.upper[d] = std::max(box.upper[d], corner[d]);
+            }
+        for (unsigned int i = 0; i < n_total; ++i)
+          near_crack[i] = near_crack[i] || box.distance(x[i]) <= 1.01 * longest_bond;
+      }
+
     // One pass: about half of the stencil is stored a particle (a bond between two owned
     // particles once), more at the ghosts; reserved at that, the arrays rarely grow.
     const std::size_t estimate = static_cast<std::size_t>(owned) * (stencil.size() / 2 + 1);
@@ -194,9 +216,10 @@ namespace PeriArlequin
           const Point<dim> &first   = x[i_first ? i : j];
           const Point<dim> &second  = x[i_first ? j : i];
           BondState         bond    = intact;
-          for (const auto &crack : pre_cracks)
-            if (crack.cuts(first, second))
-              bond = broken;
+          if (near_crack[i] && near_crack[j])
+            for (const auto &crack : pre_cracks)
+              if (crack.cuts(first, second))
+                bond = broken;
           if (bond != broken && (no_fail[i] || no_fail[j]))
             bond = unbreakable;
           state.push_back(bond);
@@ -218,6 +241,14 @@ namespace PeriArlequin
   {
     if (stencil_active)
       layout.update_mask(*this);
+  }
+
+  template <int dim>
+  void
+  BondFamilies<dim>::bonds_broke(const std::vector<StoredBond> &broken)
+  {
+    if (stencil_active)
+      layout.clear_bonds(*this, broken);
   }
 
   template <int dim>

@@ -117,7 +117,7 @@ namespace PeriArlequin
         new_breaks       = breakable.particles_with_broken_bonds();
         const bool broke = breakable.n_broken() > 0;
         if (broke)
-          bonds.states_changed();
+          bonds.bonds_broke(breakable.broken_bonds());
         scalars_current =
           fracture->needs_particle_scalars() && !Utilities::MPI::logical_or(broke, communicator);
       }

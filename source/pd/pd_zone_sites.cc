@@ -93,7 +93,21 @@ namespace PeriArlequin
     lattice.for_each_site_in(lower, upper, [&](const auto &site) {
       n += extent(lattice.position(site));
     });
-    return 1000 + n * bonds.stencil.size();
+    return weight_of_cell_with(n);
+  }
+
+  template <int dim>
+  unsigned int
+  PDZone<dim>::cell_load(const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    return weight_of_cell_with(particle_handler.n_particles_in_cell(cell));
+  }
+
+  template <int dim>
+  unsigned int
+  PDZone<dim>::weight_of_cell_with(const unsigned int n_particles) const
+  {
+    return 1000 + n_particles * bonds.stencil.size();
   }
 
   template <int dim>

@@ -129,37 +129,70 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::pair<unsigned int, std::size_t>
+  StencilLayout<dim>::mask_entry(const unsigned int i, const unsigned int k) const
+  {
+    const std::size_t  line_length = stride[1];
+    const std::size_t  s           = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
+    const unsigned int r           = run_of_line[s / line_length];
+    return {r,
+            runs[r].mask_begin + half_of_entry[k] * std::size_t(runs[r].length) +
+              (s - runs[r].begin)};
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::trim_block(const unsigned int r, const std::size_t h)
+  {
+    const auto first  = mask.begin() + runs[r].mask_begin + h * runs[r].length;
+    const auto end    = first + runs[r].length;
+    const auto intact = [](const std::uint8_t m) { return m != 0; };
+    const auto begin  = std::find_if(first, end, intact);
+    if (begin == end)
+      {
+        block_slots[r * half_offsets.size() + h] = {0, 0};
+        return;
+      }
+    const auto last =
+      std::find_if(std::make_reverse_iterator(end), std::make_reverse_iterator(begin), intact);
+    block_slots[r * half_offsets.size() + h] = {static_cast<unsigned int>(begin - first),
+                                                static_cast<unsigned int>(last.base() - first)};
+  }
+
+  template <int dim>
   void
   StencilLayout<dim>::update_mask(const BondFamilies<dim> &bonds)
   {
     std::fill(mask.begin(), mask.end(), 0);
-    const std::size_t line_length = n_held > 0 ? stride[1] : 1;
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          const unsigned int k   = bonds.stencil_index[n];
-          const std::size_t  s   = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
-          const Run         &run = runs[run_of_line[s / line_length]];
-          mask[run.mask_begin + half_of_entry[k] * std::size_t(run.length) + (s - run.begin)] =
-            bonds.state[n] != BondFamilies<dim>::broken;
-        }
-    const std::size_t n_half = half_offsets.size();
-    block_slots.assign(runs.size() * n_half, {0, 0});
+        mask[mask_entry(i, bonds.stencil_index[n]).second] =
+          bonds.state[n] != BondFamilies<dim>::broken;
     for (unsigned int r = 0; r < runs.size(); ++r)
-      for (std::size_t h = 0; h < n_half; ++h)
-        {
-          const auto first  = mask.begin() + runs[r].mask_begin + h * runs[r].length;
-          const auto end    = first + runs[r].length;
-          const auto intact = [](const std::uint8_t m) { return m != 0; };
-          const auto begin  = std::find_if(first, end, intact);
-          if (begin == end)
-            continue;
-          const auto last             = std::find_if(std::make_reverse_iterator(end),
-                                         std::make_reverse_iterator(begin),
-                                         intact);
-          block_slots[r * n_half + h] = {static_cast<unsigned int>(begin - first),
-                                         static_cast<unsigned int>(last.base() - first)};
-        }
+      for (std::size_t h = 0; h < half_offsets.size(); ++h)
+        trim_block(r, h);
+    version = next_mask_version++;
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::clear_bonds(const BondFamilies<dim>       &bonds,
+                                  const std::vector<StoredBond> &broken)
+  {
+    // The (run, half offset) blocks whose bounds may move, each trimmed once.
+    std::vector<std::pair<unsigned int, std::size_t>> blocks;
+    blocks.reserve(broken.size());
+    for (const auto &bond : broken)
+      {
+        const unsigned int k       = bonds.stencil_index[bond.index];
+        const auto [run, position] = mask_entry(bond.particle, k);
+        mask[position]             = 0;
+        blocks.emplace_back(run, half_of_entry[k]);
+      }
+    std::sort(blocks.begin(), blocks.end());
+    blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+    for (const auto &[r, h] : blocks)
+      trim_block(r, h);
     version = next_mask_version++;
   }
 

@@ -159,7 +159,7 @@ namespace PeriArlequin
     std::uint64_t local = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
-        local += pd_zone->cell_weight(cell);
+        local += pd_zone->cell_load(cell);
     const std::uint64_t largest = Utilities::MPI::max(local, communicator);
     const std::uint64_t total   = Utilities::MPI::sum(local, communicator);
     return static_cast<double>(largest) * Utilities::MPI::n_mpi_processes(communicator) /

@@ -6,14 +6,17 @@
 # <work>/mixed_mode), and the zone figures of the shipped case
 # parameter_files/adaptive_crack_branching_2d.prm (scripts/plot_zone.sh, into <work>/zone):
 #   studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]
-# <parts> (default: all): branching, kink, figures. About 40 minutes for branching and 50 for
-# kink on one core.
+# <parts> (default: all): branching, kink, figures, impact. About 40 minutes for branching, 50
+# for kink and 2 for impact on one core. impact: the impact-driven mode II plate of
+# impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; and with the strain
+# criterion added), one thread each, one after the other; prints the table of the README
+# and draws the damage maps (into <work>/impact).
 set -euo pipefail
 usage="usage: studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-parts=${4:-branching kink figures}
+parts=${4:-branching kink figures impact}
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 mkdir -p "$work"
@@ -37,6 +40,57 @@ for part in $parts; do
       mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/periarlequin" "$work/zone.prm" > "$work/zone.log" 2>&1
       "$top/scripts/plot_zone.sh" "$work/zone" > /dev/null
       echo "wrote the zone figures to $work/zone" ;;
+    impact)
+      mkdir -p "$work/impact"
+      cd "$work/impact"
+      for run in pd adaptive adaptive_strain; do
+        {
+          echo "include $here/impact_mode_ii.prm"
+          if [ "$run" != pd ]; then
+            # PD on the notches and the struck edge between them; a band of two FE cells.
+            echo "subsection Peridynamics"
+            echo "  set Region = 0, 0.07 : 0.0525, 0.13"
+            echo "end"
+            echo "subsection Coupling"
+            echo "  set Method        = weak"
+            echo "  set Blending      = force"
+            echo "  set Overlap width = 0.005"
+            echo "end"
+            echo "subsection Adaptive PD zone"
+            echo "  set Conversion criterion = damage distance$([ "$run" = adaptive_strain ] && echo ", strain")"
+            echo "end"
+          fi
+          echo "subsection Output"
+          echo "  set Directory = $work/impact/$run"
+          echo "end"
+        } > "$run.prm"
+        DEAL_II_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" \
+          "$build/periarlequin" "$run.prm" > "$run.log" 2>&1
+      done
+      echo "| run | time loop [s] | growth [s] | PD particles at the end | broken-bond energy at 30 / 60 / 90 us [J/m] | tips at 30 us (x, y) [mm] |"
+      echo "|---|---|---|---|---|---|"
+      for run in pd adaptive adaptive_strain; do
+        loop=$(sed -n 's/^Time loop: .* in \([0-9.e+-]*\) s.*/\1/p' "$run.log")
+        growth=$(awk -F'|' '$2 ~ /^ *PD zone growth/ { gsub(/[ s]/, "", $4); print $4 }' "$run.log")
+        awk -F, -v run="$run" -v loop="$loop" -v growth="${growth:-0}" '
+          NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+          { step = $1 }
+          step == 300 { tips = sprintf("(%.1f, %.1f), (%.1f, %.1f)", 1e3 * $col["branch_0_x"], 1e3 * $col["branch_0_y"],
+                                       1e3 * $col["branch_1_x"], 1e3 * $col["branch_1_y"]) }
+          step == 300 || step == 600 || step == 900 { energy = energy (energy == "" ? "" : " / ") sprintf("%.0f", $col["broken_bond_energy"]) }
+          { particles = $col["pd_particles"] }
+          END { printf "| %s | %.1f | %.1f | %d | %s | %s |\n", run, loop, growth, particles, energy, tips }' \
+          "$run/solution_energy.csv"
+      done
+      for step in 300 600 900; do
+        "$top/scripts/plot_zone.sh" adaptive "$step" > /dev/null
+        gnuplot -e "set datafile separator ','; set terminal pngcairo size 500,900 noenhanced;
+          set output 'pd/damage_$step.png'; set size ratio -1; set xrange [0:0.1]; set yrange [0:0.2];
+          set title 'pure PD, damage > 0.35, step $step'; set xlabel 'x [m]'; set ylabel 'y [m]';
+          plot 'pd/solution_damage_$(printf %06d "$step").csv' skip 2 using 1:(\$3 > 0.35 ? \$2 : 1/0) with points pt 5 ps 0.2 lc rgb '#b2182b' notitle"
+      done
+      cd "$top"
+      echo "wrote the impact runs and figures to $work/impact" ;;
     *) echo "unknown part $part" >&2; exit 1 ;;
   esac
 done

@@ -157,6 +157,8 @@ namespace PeriArlequin
     std::string overlap_text, fe_region_text;
     /** Width of the band (0: the overlap and FE regions are boxes) [m]. */
     double band_width;
+    /** Distances to pure_pd (a grown region has many boxes). */
+    RegionDistance<dim> distance_to_pure_pd;
     /** Tolerance for merging the boxes of the PD region [m] (set by check_against_mesh()). */
     double length_tolerance = 0;
   };

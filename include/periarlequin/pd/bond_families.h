@@ -111,9 +111,13 @@ namespace PeriArlequin
     {
       return layout;
     }
-    /** After entries of state changed (the PD zone's fracture pass): refresh the stencil view. */
+    /** After entries of state changed: refresh the stencil view. */
     void
     states_changed();
+
+    /** After the bonds @p broken broke (the fracture pass): refresh the stencil view there. */
+    void
+    bonds_broke(const std::vector<StoredBond> &broken);
 
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
     std::set<IdPair>

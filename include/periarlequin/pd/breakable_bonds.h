@@ -83,7 +83,7 @@ namespace PeriArlequin
       bonds.state[bond.index] = BondFamilies<dim>::broken;
       if (broken_at.empty() || broken_at.back() != bond.particle)
         broken_at.push_back(bond.particle);
-      ++n_broken_here;
+      broken_here.push_back({bond.particle, bond.index});
     }
 
     /** Break every intact bond whose stretch exceeds @p limit. */
@@ -100,7 +100,14 @@ namespace PeriArlequin
     std::size_t
     n_broken() const
     {
-      return n_broken_here;
+      return broken_here.size();
+    }
+
+    /** The bonds broken through this view, in the order of the breaks. */
+    const std::vector<StoredBond> &
+    broken_bonds() const
+    {
+      return broken_here;
     }
 
     /**
@@ -130,7 +137,7 @@ namespace PeriArlequin
   private:
     BondFamilies<dim>              &bonds;
     ArrayView<const Tensor<1, dim>> displacement;
-    std::size_t                     n_broken_here = 0;
+    std::vector<StoredBond>         broken_here;
     std::vector<unsigned int>       broken_at;
   };
 } // namespace PeriArlequin

@@ -97,6 +97,13 @@ namespace PeriArlequin
     cell_weight(const typename Triangulation<dim>::cell_iterator &cell) const;
 
     /**
+     * cell_weight() of a locally owned cell from the particles it holds now: what the load
+     * of a rank is measured with, at the cost of a count per cell (no site search).
+     */
+    unsigned int
+    cell_load(const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
+    /**
      * Is @p cell pure PD (no FE unknowns)? When the PD region holds its centre (on a mesh
      * file the region follows cell faces: check_region_follows_cells()).
      */
@@ -374,6 +381,10 @@ namespace PeriArlequin
     set_local_external_work(const double work_so_far);
 
   private:
+    /** The weight of a cell holding @p n_particles particles (cell_weight(), cell_load()). */
+    unsigned int
+    weight_of_cell_with(const unsigned int n_particles) const;
+
     /**
      * The box whose lattice sites may belong to @p cell: the cell itself (half-open) for the
      * box mesh, its bounding box for a general mesh.

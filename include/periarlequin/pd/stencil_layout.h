@@ -19,6 +19,13 @@ namespace PeriArlequin
   template <int dim>
   class BondFamilies;
 
+  /** A bond as the bond families store it: the owned particle holding it, its storage number. */
+  struct StoredBond
+  {
+    unsigned int particle;
+    std::size_t  index;
+  };
+
   /**
    * The bonds of one rank as a lattice stencil: the particles it holds (owned and ghosts)
    * placed in a box of lattice sites (x fastest, padded by the stencil's reach on every side),
@@ -77,6 +84,13 @@ namespace PeriArlequin
     update_mask(const BondFamilies<dim> &bonds);
 
     /**
+     * The bond states after the bonds @p broken of @p bonds broke (their states are broken
+     * now): what update_mask() gives, at the cost of the broken bonds, not of all bonds.
+     */
+    void
+    clear_bonds(const BondFamilies<dim> &bonds, const std::vector<StoredBond> &broken);
+
+    /**
      * The local index of the held particle at stencil entry @p k of held particle @p i, or
      * numbers::invalid_unsigned_int if that site is not held: the CSR arrays need no
      * neighbour indices of their own under the stencil.
@@ -132,6 +146,14 @@ namespace PeriArlequin
     std::array<std::vector<std::pair<unsigned int, unsigned int>>, 2> slabs;
 
   private:
+    /** The run and the mask position of the bond at stencil entry @p k of held particle @p i. */
+    std::pair<unsigned int, std::size_t>
+    mask_entry(const unsigned int i, const unsigned int k) const;
+
+    /** block_slots of run @p r and half offset @p h from the mask. */
+    void
+    trim_block(const unsigned int r, const std::size_t h);
+
     std::array<std::size_t, dim> stride;
     std::array<int, dim>         lower;
     /** Per stencil entry: the half offset of the bond, seen from the end with the lower slot. */
