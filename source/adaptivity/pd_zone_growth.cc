@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <sstream>
 #include <utility>
 
 namespace PeriArlequin
@@ -194,7 +195,8 @@ namespace PeriArlequin
                           BlendingField<dim>            &blending,
                           const std::function<void()>   &rebuild_coupling,
                           TimerOutput                   &timer,
-                          const std::vector<Point<dim>> &new_damage)
+                          const std::vector<Point<dim>> &new_damage,
+                          const double                   time)
   {
     std::vector<Box<dim>> boxes;
     {
@@ -203,9 +205,26 @@ namespace PeriArlequin
     }
     if (boxes.empty())
       return 0;
+    const MPI_Comm communicator  = pd_zone.get_communicator();
+    unsigned int   fe_cells_left = 0;
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 &&
+          std::none_of(boxes.begin(), boxes.end(), [&](const Box<dim> &box) {
+            return box.contains(cell->center());
+          }))
+        ++fe_cells_left;
+    if (Utilities::MPI::sum(fe_cells_left, communicator) == 0)
+      {
+        std::ostringstream message;
+        message << "At t = " << time << " s the adaptive PD zone would take the last "
+                << boxes.size()
+                << " FE cells: the PD zone has outgrown the FE zone, and a coupled run needs "
+                   "an FE zone to couple to. This case needs PD everywhere: run it as pure PD "
+                   "(Coupling/Method = none, Peridynamics/Region over the whole domain).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
     std::optional<TimerOutput::Scope> phase;
     phase.emplace(timer, "growth: PD zone");
-    const MPI_Comm communicator = pd_zone.get_communicator();
 
     const auto total_energy = [&]() {
       return pd_zone.kinetic_energy() + fe_zone.kinetic_energy() + fe_zone.strain_energy() +

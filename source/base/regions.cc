@@ -188,11 +188,11 @@ namespace PeriArlequin
         {
           const int last = static_cast<int>(n_bins[d]) - 1;
           lower[d] =
-            std::clamp(static_cast<int>(std::floor((box.lower[d] - origin[d]) / bin_width)) - 1,
+            std::clamp(static_cast<int>(std::floor((box.lower[d] - origin[d]) / bin_width - 1e-6)),
                        0,
                        last);
           upper[d] =
-            std::clamp(static_cast<int>(std::floor((box.upper[d] - origin[d]) / bin_width)) + 1,
+            std::clamp(static_cast<int>(std::floor((box.upper[d] - origin[d]) / bin_width + 1e-6)),
                        0,
                        last);
         }

@@ -129,7 +129,8 @@ namespace PeriArlequin
         integrator->initialize();
       },
       timer,
-      new_damage);
+      new_damage,
+      get_time());
     if (n_cells == 0)
       return 0;
     if (output_parameters.progress_interval > 0)

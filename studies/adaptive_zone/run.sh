@@ -8,9 +8,9 @@
 #   studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]
 # <parts> (default: all): branching, kink, figures, impact. About 40 minutes for branching, 50
 # for kink and 2 for impact on one core. impact: the impact-driven mode II plate of
-# impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; and with the strain
-# criterion added), one thread each, one after the other; prints the table of the README
-# and draws the damage maps (into <work>/impact).
+# impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with the strain
+# criterion added; checked every 50 steps), one thread each, one after the other; prints the
+# table of the README and draws the damage maps (into <work>/impact).
 set -euo pipefail
 usage="usage: studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]"
 build=$(cd "${1:?$usage}" && pwd)
@@ -43,7 +43,7 @@ for part in $parts; do
     impact)
       mkdir -p "$work/impact"
       cd "$work/impact"
-      for run in pd adaptive adaptive_strain; do
+      for run in pd adaptive adaptive_strain adaptive_interval50; do
         {
           echo "include $here/impact_mode_ii.prm"
           if [ "$run" != pd ]; then
@@ -58,6 +58,7 @@ for part in $parts; do
             echo "end"
             echo "subsection Adaptive PD zone"
             echo "  set Conversion criterion = damage distance$([ "$run" = adaptive_strain ] && echo ", strain")"
+            [ "$run" = adaptive_interval50 ] && echo "  set Check interval = 50"
             echo "end"
           fi
           echo "subsection Output"
@@ -69,7 +70,7 @@ for part in $parts; do
       done
       echo "| run | time loop [s] | growth [s] | PD particles at the end | broken-bond energy at 30 / 60 / 90 us [J/m] | tips at 30 us (x, y) [mm] |"
       echo "|---|---|---|---|---|---|"
-      for run in pd adaptive adaptive_strain; do
+      for run in pd adaptive adaptive_strain adaptive_interval50; do
         loop=$(sed -n 's/^Time loop: .* in \([0-9.e+-]*\) s.*/\1/p' "$run.log")
         growth=$(awk -F'|' '$2 ~ /^ *PD zone growth/ { gsub(/[ s]/, "", $4); print $4 }' "$run.log")
         awk -F, -v run="$run" -v loop="$loop" -v growth="${growth:-0}" '
@@ -84,6 +85,7 @@ for part in $parts; do
       done
       for step in 300 600 900; do
         "$top/scripts/plot_zone.sh" adaptive "$step" > /dev/null
+        "$top/scripts/plot_zone.sh" adaptive_strain "$step" > /dev/null
         gnuplot -e "set datafile separator ','; set terminal pngcairo size 500,900 noenhanced;
           set output 'pd/damage_$step.png'; set size ratio -1; set xrange [0:0.1]; set yrange [0:0.2];
           set title 'pure PD, damage > 0.35, step $step'; set xlabel 'x [m]'; set ylabel 'y [m]';

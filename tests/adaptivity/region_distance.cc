@@ -80,15 +80,14 @@ namespace
 
     const RegionDistance<dim> search(region);
     double                    differs_from_region = 0, differs_from_scan = 0;
-    unsigned int              inside              = 0;
+    unsigned int              inside = 0;
     for (const auto &p : points)
       {
         double scan = std::numeric_limits<double>::infinity();
         for (const auto &box : region.boxes)
           scan = std::min(scan, distance_to_box(p, box.lower, box.upper));
-        const double found = search.distance(p);
-        differs_from_region =
-          std::max(differs_from_region, std::abs(found - region.distance(p)));
+        const double found  = search.distance(p);
+        differs_from_region = std::max(differs_from_region, std::abs(found - region.distance(p)));
         differs_from_scan =
           std::max(differs_from_scan, std::abs(found - scan) / std::max(scan, 1e-300));
         inside += scan == 0;

@@ -101,6 +101,8 @@ namespace PeriArlequin
      * depends on the zones (contact, coupling) and the accelerations of the current state.
      * Each phase is timed in @p timer (sections "growth: ...").
      * Returns the number of cells converted over all ranks (0: nothing changed).
+     * A growth that would leave no FE cell is refused with an error that says so at @p time
+     * [s]: a coupled run needs an FE zone to couple to.
      */
     unsigned int
     grow(FEZone<dim>                   &fe_zone,
@@ -108,7 +110,8 @@ namespace PeriArlequin
          BlendingField<dim>            &blending,
          const std::function<void()>   &rebuild_coupling,
          TimerOutput                   &timer,
-         const std::vector<Point<dim>> &new_damage = {});
+         const std::vector<Point<dim>> &new_damage,
+         const double                   time);
 
     /** The distances and speeds the growth works with (set by initialize()). */
     const GrowthContext &
