@@ -139,9 +139,10 @@ namespace PeriArlequin
   } // namespace
 
   template <int dim>
-  RegionDistance<dim>::RegionDistance(const Region<dim> &region)
-    : boxes(region.boxes)
+  RegionDistance<dim>::RegionDistance(const Region<dim> &source)
+    : region(source)
   {
+    const std::vector<Box<dim>> &boxes = region.boxes;
     // A few boxes are scanned; so is a region without extent.
     if (boxes.size() <= 8)
       return;
@@ -227,8 +228,9 @@ namespace PeriArlequin
   double
   RegionDistance<dim>::distance(const Point<dim> &p) const
   {
+    const std::vector<Box<dim>> &boxes = region.boxes;
     if (bin_width == 0)
-      return Region<dim>{boxes}.distance(p);
+      return region.distance(p);
     std::array<int, dim> centre;
     int                  last_ring = 0;
     for (unsigned int d = 0; d < dim; ++d)
@@ -254,7 +256,7 @@ namespace PeriArlequin
     for (int r = 0; r <= last_ring; ++r)
       {
         if (visited > boxes.size())
-          return std::min(nearest, Region<dim>{boxes}.distance(p));
+          return std::min(nearest, region.distance(p));
         // The ring's faces: bin[d] = centre[d] -+ r, the axes before d strictly inside the
         // ring (their faces are done), the axes after d across it.
         for (unsigned int d = 0; d < dim; ++d)

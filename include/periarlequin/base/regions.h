@@ -96,7 +96,8 @@ namespace PeriArlequin
     distance(const Point<dim> &p) const;
 
   private:
-    std::vector<Box<dim>> boxes;
+    /** The region (its boxes are scanned where the grid does not help). */
+    Region<dim> region;
     /** The grid: its lower corner, bin width and bins per axis (none for a few boxes). */
     Point<dim>                    origin;
     double                        bin_width = 0;
