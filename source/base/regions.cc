@@ -181,8 +181,8 @@ namespace PeriArlequin
     while (n_all > 16 * boxes.size());
     origin = hull.lower;
 
-    // Each box is listed in the bins it touches and their neighbours: rounding at a bin's
-    // edge cannot hide a box from the search.
+    // Each box is listed in the bins it touches, widened by a millionth of a bin on each
+    // side: rounding at a bin's edge cannot hide a box from the search.
     const auto bin_range = [&](const Box<dim> &box) {
       std::array<int, dim> lower, upper;
       for (unsigned int d = 0; d < dim; ++d)

@@ -91,7 +91,8 @@ namespace PeriArlequin
             half_offsets.push_back({static_cast<std::size_t>(entry_shift[k]), k});
           }
       }
-    for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+    // (A rank that holds no particle has no box, no shifts and no bonds to look up.)
+    for (unsigned int k = 0; k < bonds.stencil.size() && n_held > 0; ++k)
       if (!entry_is_half[k])
         half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
 
