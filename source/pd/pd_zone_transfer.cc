@@ -41,7 +41,6 @@ namespace PeriArlequin
   PDZone<dim>::pack_particle_state(const typename Triangulation<dim>::cell_iterator &cell) const
   {
     std::vector<TransferredParticle<dim>> records;
-    const auto                            ids = ghosts.ids();
     for (const auto &particle : particle_handler.particles_in_cell(
            typename Triangulation<dim>::active_cell_iterator(cell)))
       {
@@ -52,10 +51,7 @@ namespace PeriArlequin
                                           state.accelerations()[i],
                                           applied_force[i]}},
                                         energy_density[i],
-                                        {}};
-        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-          if (bonds.state[n] == BondFamilies<dim>::broken)
-            record.broken_partners.push_back(ids[bonds.neighbor(i, n)]);
+                                        broken_partners[i]};
         records.push_back(std::move(record));
       }
     return Utilities::pack(records, false);
@@ -65,6 +61,18 @@ namespace PeriArlequin
   void
   PDZone<dim>::attach_particle_state()
   {
+    const auto         ids     = ghosts.ids();
+    const unsigned int n_owned = ghosts.n_owned();
+    broken_partners.assign(n_owned, {});
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        if (bonds.state[n] == BondFamilies<dim>::broken)
+          {
+            const unsigned int j = bonds.neighbor(i, n);
+            broken_partners[i].push_back(ids[j]);
+            if (j < n_owned)
+              broken_partners[j].push_back(ids[i]);
+          }
     state_handle = triangulation.register_data_attach(
       [this](const typename Triangulation<dim>::cell_iterator &cell,
              const typename Triangulation<dim>::CellStatus) { return pack_particle_state(cell); },

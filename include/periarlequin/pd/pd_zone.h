@@ -535,6 +535,12 @@ namespace PeriArlequin
     std::vector<unsigned int> new_breaks;
     /** Handle of the particle state attached to the cells during a repartition. */
     unsigned int state_handle = numbers::invalid_unsigned_int;
+    /**
+     * Per owned particle, the ids of the other ends of its broken bonds, made when the state
+     * is attached: a bond between two owned particles is stored at one end only, but both
+     * ends may go to different ranks, and each needs to know it is broken.
+     */
+    std::vector<std::vector<types::particle_index>> broken_partners;
     /** Scratch of load_density(), called per particle and step: no allocation there. */
     mutable Vector<double> load_value = Vector<double>(dim);
     /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
