@@ -91,10 +91,11 @@ namespace PeriArlequin
             half_offsets.push_back({static_cast<std::size_t>(entry_shift[k]), k});
           }
       }
-    // (A rank that holds no particle has no box, no shifts and no bonds to look up.)
-    for (unsigned int k = 0; k < bonds.stencil.size() && n_held > 0; ++k)
-      if (!entry_is_half[k])
-        half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
+    // A rank that holds no particle has no box: no shifts and no bonds to look up.
+    if (n_held > 0)
+      for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+        if (!entry_is_half[k])
+          half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
 
     runs.clear();
     max_run_length        = 0;

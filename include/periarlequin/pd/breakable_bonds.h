@@ -81,8 +81,6 @@ namespace PeriArlequin
     break_bond(const Bond &bond)
     {
       bonds.state[bond.index] = BondFamilies<dim>::broken;
-      if (broken_at.empty() || broken_at.back() != bond.particle)
-        broken_at.push_back(bond.particle);
       broken_here.push_back({bond.particle, bond.index});
     }
 
@@ -114,10 +112,14 @@ namespace PeriArlequin
      * The owned particles that stored a bond broken through this view, in the order of the
      * breaks (consecutive repeats merged).
      */
-    const std::vector<unsigned int> &
+    std::vector<unsigned int>
     particles_with_broken_bonds() const
     {
-      return broken_at;
+      std::vector<unsigned int> particles;
+      for (const StoredBond &bond : broken_here)
+        if (particles.empty() || particles.back() != bond.particle)
+          particles.push_back(bond.particle);
+      return particles;
     }
 
     /** The bond families, read only (for models that split the energy into bonds). */
@@ -138,7 +140,6 @@ namespace PeriArlequin
     BondFamilies<dim>              &bonds;
     ArrayView<const Tensor<1, dim>> displacement;
     std::vector<StoredBond>         broken_here;
-    std::vector<unsigned int>       broken_at;
   };
 } // namespace PeriArlequin
 
