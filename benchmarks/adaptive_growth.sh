@@ -8,8 +8,9 @@
 #
 #   benchmarks/adaptive_growth.sh [build-dir] [other-build-dir]
 #
-# With a second build (the same program built from another commit), both are run alternated
-# and the ratio of their growth costs is printed; LABELS names the builds in the figure
+# With a second build (the same program built from another commit, or a directory holding a
+# copy of periarlequin-growth-cost and libperiarlequin.so), both are run alternated and the
+# ratio of their growth costs is printed; LABELS names the builds in the figure
 # ("build 1,build 2"). Writes adaptive_growth.csv and, with
 # gnuplot, adaptive_growth.png (growth cost in steps against the converted cells) in the
 # current directory.
@@ -25,11 +26,14 @@ IFS=, read -r -a labels <<< "${LABELS:-build 1,build 2}"
 growths=5
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for b in "${builds[@]}"; do cmake --build "$b" --target periarlequin-growth-cost > /dev/null; done
+for b in "${builds[@]}"; do
+  [ -f "$b/CMakeCache.txt" ] && cmake --build "$b" --target periarlequin-growth-cost > /dev/null
+done
 
 # One run: particles, growth [ms], step [ms] (the loop's time without the growths, per step).
 measure() { # build zone side
-  (cd "$work" && "$1/periarlequin-growth-cost" 2.5e-4 "$2" "$3" "$growths") | awk -v g="$growths" '
+  (cd "$work" && LD_LIBRARY_PATH="$1${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    "$1/periarlequin-growth-cost" 2.5e-4 "$2" "$3" "$growths") | awk -v g="$growths" '
     /PD particles/ {for (i = 1; i <= NF; ++i) if ($i == "PD") n = $(i - 1)}
     /^Time loop:/ {steps = $3; loop = $6}
     /^\| PD zone growth/ {split($0, f, "|"); split(f[6], t, " "); growth = t[1]}  # the slowest rank

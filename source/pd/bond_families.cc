@@ -113,8 +113,24 @@ namespace PeriArlequin
                            const std::vector<PreCrack<dim>>              &pre_cracks,
                            const std::vector<bool>                       &no_fail,
                            const std::set<IdPair>                        &broken_pairs,
-                           const Kernel                                   kernel)
+                           const Kernel                                   kernel,
+                           const PreviousNumbering                       *previous)
   {
+    // The families being replaced, for those that stay as they were.
+    const bool                 was_stencil  = stencil_active;
+    const unsigned int         owned_before = n_owned;
+    std::vector<unsigned int>  begin_before;
+    std::vector<std::uint16_t> index_before;
+    std::vector<std::uint8_t>  state_before;
+    std::vector<double>        volume_before;
+    if (previous)
+      {
+        begin_before.swap(family_begin);
+        index_before.swap(stencil_index);
+        state_before.swap(state);
+        volume_before.swap(weighted_volume);
+      }
+
     const unsigned int owned = ghosts.n_owned();
     const auto         x     = ghosts.reference_positions();
     const auto         ids   = ghosts.ids();
@@ -131,6 +147,10 @@ namespace PeriArlequin
         if (!stencil_active)
           layout = StencilLayout<dim>();
       }
+    const std::vector<unsigned int> kept =
+      previous && was_stencil && stencil_active ?
+        families_to_keep(*previous, owned_before) :
+        std::vector<unsigned int>(owned, numbers::invalid_unsigned_int);
 
     // visit_family(i, held) calls held(j, k) for every held neighbour j (stencil entry k) of
     // owned particle i, in the stencil's order. A bond between two owned particles is stored
@@ -205,6 +225,18 @@ namespace PeriArlequin
     weighted_volume.assign(n_total, 0.);
     for (unsigned int i = 0; i < owned; ++i)
       {
+        if (const unsigned int p = kept[i]; p != numbers::invalid_unsigned_int)
+          {
+            stencil_index.insert(stencil_index.end(),
+                                 index_before.begin() + begin_before[p],
+                                 index_before.begin() + begin_before[p + 1]);
+            state.insert(state.end(),
+                         state_before.begin() + begin_before[p],
+                         state_before.begin() + begin_before[p + 1]);
+            weighted_volume[i]  = volume_before[p];
+            family_begin[i + 1] = state.size();
+            continue;
+          }
         visit_family(i, [&](const unsigned int j, const unsigned int k) {
           // The full family gives the weighted volume.
           weighted_volume[i] += stencil[k].length * stencil[k].length * stencil[k].volume;
@@ -233,6 +265,35 @@ namespace PeriArlequin
     mark_broken(broken_pairs, ghosts);
     if (stencil_active)
       layout.update_mask(*this);
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  BondFamilies<dim>::families_to_keep(const PreviousNumbering &previous,
+                                      const unsigned int       n_owned_before) const
+  {
+    AssertDimension(previous.owned_index.size(), n_owned);
+    AssertDimension(previous.touched.size(), n_total);
+    std::vector<unsigned int> keep(n_owned, numbers::invalid_unsigned_int);
+    unsigned int              last = numbers::invalid_unsigned_int;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (const unsigned int p = previous.owned_index[i]; p != numbers::invalid_unsigned_int)
+        {
+          if (p >= n_owned_before || (last != numbers::invalid_unsigned_int && p <= last))
+            return std::vector<unsigned int>(n_owned, numbers::invalid_unsigned_int);
+          keep[i] = last = p;
+        }
+    // A touched particle changes its own family and those of its stencil neighbours.
+    for (unsigned int t = 0; t < n_total; ++t)
+      if (previous.touched[t])
+        {
+          if (t < n_owned)
+            keep[t] = numbers::invalid_unsigned_int;
+          for (unsigned int k = 0; k < stencil.size(); ++k)
+            if (const unsigned int j = layout.neighbor(t, k); j < n_owned)
+              keep[j] = numbers::invalid_unsigned_int;
+        }
+    return keep;
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <array>
+#include <optional>
 #include <sstream>
 
 namespace PeriArlequin
@@ -131,13 +132,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken)
+  PDZone<dim>::build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken,
+                                         const HeldBefore                                   *before)
   {
     ghosts.reinit();
     check_horizon_covered();
     compute_blending_weights();
-    // Bonds in the overlap and the slave layer never break: the coupling assumes a continuum
-    // there.
     // On a general mesh a site of the extent may lie outside the mesh (a hole, a notch): no
     // particle, no bond, and no error.
     std::unique_ptr<internal::CellLocator<dim>> locator;
@@ -146,17 +146,31 @@ namespace PeriArlequin
     const SiteFilter extent_in_mesh = [&](const Point<dim> &x) {
       return extent(x) && (!locator || locator->holds(x));
     };
-    const auto        x = ghosts.reference_positions();
-    std::vector<bool> no_fail(ghosts.n_total());
-    for (unsigned int i = 0; i < no_fail.size(); ++i)
-      no_fail[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
+    const std::vector<bool>                                      no_fail = unbreakable_particles();
+    std::optional<typename BondFamilies<dim>::PreviousNumbering> previous;
+    if (before)
+      {
+        const unsigned int n_owned = ghosts.n_owned();
+        previous.emplace();
+        previous->owned_index.assign(n_owned, numbers::invalid_unsigned_int);
+        previous->touched.assign(ghosts.n_total(), true);
+        for (unsigned int p = 0; p < before->ids.size(); ++p)
+          if (const unsigned int i = ghosts.local_index(before->ids[p]);
+              i != numbers::invalid_unsigned_int)
+            {
+              previous->touched[i] = no_fail[i] != before->no_fail[p];
+              if (i < n_owned)
+                previous->owned_index[i] = p;
+            }
+      }
     bonds.build(lattice,
                 ghosts,
                 extent_in_mesh,
                 parameters.pre_cracks,
                 no_fail,
                 broken,
-                force_kernel(parameters.force_kernel, *model));
+                force_kernel(parameters.force_kernel, *model),
+                previous ? &*previous : nullptr);
     find_bonds_near_overlap();
     model->initialize(material, bonds);
     new_breaks.clear();
@@ -171,6 +185,17 @@ namespace PeriArlequin
     find_boundary_layers();
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator);
+  }
+
+  template <int dim>
+  std::vector<bool>
+  PDZone<dim>::unbreakable_particles() const
+  {
+    const auto        x = ghosts.reference_positions();
+    std::vector<bool> no_fail(ghosts.n_total());
+    for (unsigned int i = 0; i < no_fail.size(); ++i)
+      no_fail[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
+    return no_fail;
   }
 
   template <int dim>

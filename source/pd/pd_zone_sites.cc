@@ -151,14 +151,21 @@ namespace PeriArlequin
     };
     // The storage of the particles held now, of those to insert and of the ghosts to come
     // (the accepted sites of the ghost cells), reserved at once: grown one particle at a
-    // time, it can reach twice that.
+    // time, it can reach twice that. A zone that grows reserves a quarter more, so that its
+    // next growths do not copy the storage again.
     std::size_t n_accepted = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() || cell->is_ghost())
         for_each_site(cell, [&](const auto &, const Point<dim> &) { ++n_accepted; });
-    particle_handler.reserve(
-      particle_handler.n_locally_owned_particles() +
-      std::distance(particle_handler.begin_ghost(), particle_handler.end_ghost()) + n_accepted);
+    const std::size_t n_held = particle_handler.n_locally_owned_particles();
+    const std::size_t needed =
+      n_held + std::distance(particle_handler.begin_ghost(), particle_handler.end_ghost()) +
+      n_accepted;
+    if (needed > reserved_particles)
+      {
+        reserved_particles = n_held > 0 ? needed + needed / 4 : needed;
+        particle_handler.reserve(reserved_particles);
+      }
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for_each_site(cell, [&](const auto &site, const Point<dim> &x) {
@@ -184,6 +191,8 @@ namespace PeriArlequin
     const ParticleState<dim>                 old_state         = state;
     const std::vector<Tensor<1, dim>>        old_applied_force = applied_force;
     const auto                               broken            = bonds.broken_bonds(old_ids_view);
+    const HeldBefore                         held_before{{old_ids_view.begin(), old_ids_view.end()},
+                                 unbreakable_particles()};
 
     for ([[maybe_unused]] const Point<dim> &x : ghosts.reference_positions())
       Assert(grown_extent(x), ExcMessage("PDZone::extend(): the extent must only grow."));
@@ -194,7 +203,7 @@ namespace PeriArlequin
         return ghosts.local_index(id) == numbers::invalid_unsigned_int && extent(x);
       },
       may_hold_new_sites);
-    build_particle_structures(broken);
+    build_particle_structures(broken, &held_before);
 
     std::vector<unsigned int> previous(ghosts.n_owned(), numbers::invalid_unsigned_int);
     for (unsigned int j = 0; j < n_old; ++j)

@@ -82,13 +82,28 @@ namespace PeriArlequin
     build_stencil(const double dx, const double horizon);
 
     /**
+     * What a rebuild after particles were inserted (a grown zone) can keep of the families it
+     * replaces. An owned particle that was held before and none of whose stencil neighbours is
+     * touched keeps its family as stored, breaks included: nothing that decides it changed.
+     */
+    struct PreviousNumbering
+    {
+      /** Per owned particle of the new numbering: its owned index before, or invalid (new). */
+      std::vector<unsigned int> owned_index;
+      /** Per owned and ghost particle: new, or its no-fail flag changed. */
+      std::vector<bool> touched;
+    };
+
+    /**
      * The families of the owned particles of @p ghosts on @p lattice (the stencil built):
      * every stencil neighbour that is held, owned or ghost. A bond cut by one of
      * @p pre_cracks starts broken, an intact one with an end whose @p no_fail is true (one
      * entry per owned and ghost particle) cannot break. A neighbour that @p extent accepts but that
      * is not held means the ghost layer does not cover the horizon: an error. The bonds whose ends'
      * ids are a pair in @p broken_pairs start broken (a zone rebuilt with the bonds broken so far).
-     * Fills weighted_volume for owned particles and ghosts.
+     * Fills weighted_volume for owned particles and ghosts. With @p previous (these families
+     * were built before particles were inserted), the families it shows unchanged are copied
+     * (stencil layouts only); the result is the same as without it.
      */
     void
     build(const Lattice<dim>                            &lattice,
@@ -97,7 +112,8 @@ namespace PeriArlequin
           const std::vector<PreCrack<dim>>              &pre_cracks,
           const std::vector<bool>                       &no_fail,
           const std::set<IdPair>                        &broken_pairs,
-          const Kernel                                   kernel = Kernel::automatic);
+          const Kernel                                   kernel   = Kernel::automatic,
+          const PreviousNumbering                       *previous = nullptr);
 
     /** Whether the models loop over the stencil layout (else over the CSR arrays). */
     bool
@@ -189,6 +205,14 @@ namespace PeriArlequin
     damage() const;
 
   private:
+    /**
+     * Per owned particle, the owned index before whose family it keeps (invalid: build it), for
+     * a layout just placed. Copies keep the storage rule (a bond between two owned particles
+     * at the lower index) only if the particles held before keep their order: else none.
+     */
+    std::vector<unsigned int>
+    families_to_keep(const PreviousNumbering &previous, const unsigned int n_owned_before) const;
+
     /** Set the state of the bonds in @p broken_pairs to broken, without refreshing the layout. */
     void
     mark_broken(const std::set<IdPair> &broken_pairs, const GhostExchange<dim> &ghosts);

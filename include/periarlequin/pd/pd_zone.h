@@ -439,12 +439,28 @@ namespace PeriArlequin
     void
     insert_particles(const std::function<bool(const Point<dim> &, types::particle_index)> &accept,
                      const CellFilter &cells = CellFilter());
+    /** The particles held before a rebuild that inserts particles, as the bonds need them. */
+    struct HeldBefore
+    {
+      /** Owned, then ghost particles. */
+      std::vector<types::particle_index> ids;
+      /** Whose bonds could not break (unbreakable_particles()). */
+      std::vector<bool> no_fail;
+    };
     /**
      * Local numbers, ghosts, bonds, weights, model and prescribed particles; the bonds between
-     * the particle ids of a pair in @p broken start broken.
+     * the particle ids of a pair in @p broken start broken. With @p before (the zone grew),
+     * the bond families that cannot have changed are kept.
      */
     void
-    build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken = {});
+    build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken = {},
+                              const HeldBefore                                   *before = nullptr);
+    /**
+     * Per owned and ghost particle, whether its bonds cannot break: in the overlap and the slave
+     * layer (the coupling assumes a continuum there) or in Peridynamics/No-fail region.
+     */
+    std::vector<bool>
+    unbreakable_particles() const;
     void
     check_horizon_covered() const;
     /**
@@ -502,14 +518,16 @@ namespace PeriArlequin
     bool general_cells;
     /** While particles are inserted into a general mesh: the cells around each vertex. */
     std::vector<std::set<typename Triangulation<dim>::active_cell_iterator>> vertex_to_cells;
-    Particles::ParticleHandler<dim>                                          particle_handler;
-    GhostExchange<dim>                                                       ghosts;
-    ParticleState<dim>                                                       state;
-    BondFamilies<dim>                                                        bonds;
-    std::unique_ptr<PDMaterialModel<dim>>                                    model;
-    std::unique_ptr<FractureCriterion<dim>>                                  fracture;
-    PrescribedParticles<dim>                                                 prescribed;
-    SiteFilter                                                               extent;
+    /** The particles the particle handler's storage was last reserved for. */
+    std::size_t                             reserved_particles = 0;
+    Particles::ParticleHandler<dim>         particle_handler;
+    GhostExchange<dim>                      ghosts;
+    ParticleState<dim>                      state;
+    BondFamilies<dim>                       bonds;
+    std::unique_ptr<PDMaterialModel<dim>>   model;
+    std::unique_ptr<FractureCriterion<dim>> fracture;
+    PrescribedParticles<dim>                prescribed;
+    SiteFilter                              extent;
     /** The pure PD region (Peridynamics/Region, grown by set_region()). */
     Region<dim>             region;
     Box<dim>                domain;
