@@ -5,6 +5,8 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <sstream>
 
 namespace PeriArlequin
@@ -24,30 +26,89 @@ namespace PeriArlequin
   {
     template <int dim>
     void
-    mark_cells_near(const FEZone<dim>       &fe_zone,
-                    std::vector<Point<dim>> &points,
-                    const double             distance,
-                    std::vector<bool>       &convert)
+    mark_cells_near(const FEZone<dim>             &fe_zone,
+                    const std::vector<Point<dim>> &points,
+                    const double                   distance,
+                    std::vector<bool>             &convert)
     {
-      std::sort(points.begin(), points.end(), [](const Point<dim> &a, const Point<dim> &b) {
-        return a[0] < b[0];
-      });
+      if (points.empty())
+        return;
+      // The points binned on a grid of bins at least `distance` wide (at most about four
+      // bins a point): a cell looks only at the bins its box, widened by `distance`, touches.
+      Box<dim> bounds{points[0], points[0]};
+      for (const Point<dim> &p : points)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            bounds.lower[d] = std::min(bounds.lower[d], p[d]);
+            bounds.upper[d] = std::max(bounds.upper[d], p[d]);
+          }
+      double volume = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        volume *= bounds.upper[d] - bounds.lower[d] + distance;
+      const double widest = std::max(distance, std::pow(volume / (4. * points.size()), 1. / dim));
+      const double bin    = widest > 0 ? widest : 1.;
+      std::array<unsigned int, dim> n_bins;
+      std::size_t                   n_all_bins = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          n_bins[d] = static_cast<unsigned int>((bounds.upper[d] - bounds.lower[d]) / bin) + 1;
+          n_all_bins *= n_bins[d];
+        }
+      const auto bin_along = [&](const double x, const unsigned int d) {
+        return static_cast<int>(std::floor((x - bounds.lower[d]) / bin));
+      };
+      const auto bin_of = [&](const Point<dim> &p) {
+        std::size_t index = 0;
+        for (int d = dim - 1; d >= 0; --d)
+          index =
+            index * n_bins[d] + std::min<int>(bin_along(p[d], d), static_cast<int>(n_bins[d]) - 1);
+        return index;
+      };
+      std::vector<std::size_t> bin_start(n_all_bins + 1, 0);
+      for (const Point<dim> &p : points)
+        ++bin_start[bin_of(p) + 1];
+      for (std::size_t b = 0; b < n_all_bins; ++b)
+        bin_start[b + 1] += bin_start[b];
+      std::vector<Point<dim>>  binned(points.size());
+      std::vector<std::size_t> next(bin_start.begin(), bin_start.end() - 1);
+      for (const Point<dim> &p : points)
+        binned[next[bin_of(p)]++] = p;
+
       for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
         {
           if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
             continue;
-          const Box<dim> box = cell_box<dim>(cell);
-          auto           first =
-            std::lower_bound(points.begin(),
-                             points.end(),
-                             box.lower[0] - distance,
-                             [](const Point<dim> &p, const double x) { return p[0] < x; });
-          for (; first != points.end() && (*first)[0] <= box.upper[0] + distance; ++first)
-            if (box.distance(*first) < distance)
-              {
-                convert[cell->active_cell_index()] = true;
+          const Box<dim>       box = cell_box<dim>(cell);
+          std::array<int, dim> first, last;
+          bool                 outside = false;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              first[d] = std::max(bin_along(box.lower[d] - distance, d), 0);
+              last[d] =
+                std::min(bin_along(box.upper[d] + distance, d), static_cast<int>(n_bins[d]) - 1);
+              outside = outside || first[d] > last[d];
+            }
+          if (outside)
+            continue;
+          // Every bin of the block [first, last], the first axis fastest.
+          std::array<int, dim> b    = first;
+          bool                 near = false;
+          while (!near)
+            {
+              std::size_t index = 0;
+              for (int d = dim - 1; d >= 0; --d)
+                index = index * n_bins[d] + b[d];
+              for (std::size_t k = bin_start[index]; k < bin_start[index + 1] && !near; ++k)
+                near = box.distance(binned[k]) < distance;
+              unsigned int d = 0;
+              while (d < dim && b[d] == last[d])
+                b[d] = first[d], ++d;
+              if (d == dim)
                 break;
-              }
+              ++b[d];
+            }
+          if (near)
+            convert[cell->active_cell_index()] = true;
         }
     }
 
@@ -55,16 +116,42 @@ namespace PeriArlequin
     std::vector<Point<dim>>
     gather_points(const std::vector<Point<dim>> &local, const MPI_Comm communicator)
     {
-      std::vector<Point<dim>> all;
-      for (const auto &part : Utilities::MPI::all_gather(communicator, local))
-        all.insert(all.end(), part.begin(), part.end());
-      return all;
+      // Coordinates as plain doubles: no serialisation of the (possibly many) points.
+      const int        n_local = static_cast<int>(dim * local.size());
+      std::vector<int> counts(Utilities::MPI::n_mpi_processes(communicator));
+      MPI_Allgather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator);
+      std::vector<int> offsets(counts.size() + 1, 0);
+      for (unsigned int r = 0; r < counts.size(); ++r)
+        offsets[r + 1] = offsets[r] + counts[r];
+      std::vector<double> mine(n_local), all(offsets.back());
+      for (unsigned int i = 0; i < local.size(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          mine[dim * i + d] = local[i][d];
+      MPI_Allgatherv(mine.data(),
+                     n_local,
+                     MPI_DOUBLE,
+                     all.data(),
+                     counts.data(),
+                     offsets.data(),
+                     MPI_DOUBLE,
+                     communicator);
+      std::vector<Point<dim>> points(all.size() / dim);
+      for (unsigned int i = 0; i < points.size(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          points[i][d] = all[dim * i + d];
+      return points;
     }
 
     template void
-    mark_cells_near(const FEZone<2> &, std::vector<Point<2>> &, const double, std::vector<bool> &);
+    mark_cells_near(const FEZone<2> &,
+                    const std::vector<Point<2>> &,
+                    const double,
+                    std::vector<bool> &);
     template void
-    mark_cells_near(const FEZone<3> &, std::vector<Point<3>> &, const double, std::vector<bool> &);
+    mark_cells_near(const FEZone<3> &,
+                    const std::vector<Point<3>> &,
+                    const double,
+                    std::vector<bool> &);
     template std::vector<Point<2>>
     gather_points(const std::vector<Point<2>> &, const MPI_Comm);
     template std::vector<Point<3>>

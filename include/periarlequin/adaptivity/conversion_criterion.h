@@ -119,14 +119,14 @@ namespace PeriArlequin
   {
     /**
      * Flag the locally owned FE cells (with DoFs) within @p distance of one of @p points (the
-     * points of all ranks; sorted along x here, so that each cell looks at a slab only).
+     * points of all ranks; binned here, so that each cell looks at the points near it only).
      */
     template <int dim>
     void
-    mark_cells_near(const FEZone<dim>       &fe_zone,
-                    std::vector<Point<dim>> &points,
-                    const double             distance,
-                    std::vector<bool>       &convert);
+    mark_cells_near(const FEZone<dim>             &fe_zone,
+                    const std::vector<Point<dim>> &points,
+                    const double                   distance,
+                    std::vector<bool>             &convert);
 
     /** The points of all ranks in one list, in rank order (collective). */
     template <int dim>
