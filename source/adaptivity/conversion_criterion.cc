@@ -1,4 +1,5 @@
 #include <periarlequin/adaptivity/conversion_criterion.h>
+#include <periarlequin/base/gather.h>
 #include <periarlequin/base/parameters.h>
 
 #include <deal.II/base/mpi.h>
@@ -116,26 +117,12 @@ namespace PeriArlequin
     std::vector<Point<dim>>
     gather_points(const std::vector<Point<dim>> &local, const MPI_Comm communicator)
     {
-      // Coordinates as plain doubles: no serialisation of the (possibly many) points.
-      const int        n_local = static_cast<int>(dim * local.size());
-      std::vector<int> counts(Utilities::MPI::n_mpi_processes(communicator));
-      MPI_Allgather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator);
-      std::vector<int> offsets(counts.size() + 1, 0);
-      for (unsigned int r = 0; r < counts.size(); ++r)
-        offsets[r + 1] = offsets[r] + counts[r];
-      std::vector<double> mine(n_local), all(offsets.back());
+      std::vector<double> mine(dim * local.size());
       for (unsigned int i = 0; i < local.size(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           mine[dim * i + d] = local[i][d];
-      MPI_Allgatherv(mine.data(),
-                     n_local,
-                     MPI_DOUBLE,
-                     all.data(),
-                     counts.data(),
-                     offsets.data(),
-                     MPI_DOUBLE,
-                     communicator);
-      std::vector<Point<dim>> points(all.size() / dim);
+      const std::vector<double> all = gather_values(mine, communicator);
+      std::vector<Point<dim>>   points(all.size() / dim);
       for (unsigned int i = 0; i < points.size(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           points[i][d] = all[dim * i + d];

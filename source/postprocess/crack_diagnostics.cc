@@ -1,4 +1,5 @@
 #include <periarlequin/base/crack_tip_field.h>
+#include <periarlequin/base/gather.h>
 #include <periarlequin/postprocess/crack_diagnostics.h>
 #include <periarlequin/simulator.h>
 
@@ -156,14 +157,14 @@ namespace PeriArlequin
           local.push_back(damage[i]);
         }
     damaged.clear();
-    for (const auto &part : Utilities::MPI::all_gather(communicator, local))
-      for (std::size_t k = 0; k < part.size(); k += dim + 2)
-        {
-          Cracked particle{static_cast<types::particle_index>(part[k]), Point<dim>()};
-          for (unsigned int d = 0; d < dim; ++d)
-            particle.position[d] = part[k + 1 + d];
-          damaged.emplace_back(particle, part[k + dim + 1]);
-        }
+    const std::vector<double> all = gather_values(local, communicator);
+    for (std::size_t k = 0; k < all.size(); k += dim + 2)
+      {
+        Cracked particle{static_cast<types::particle_index>(all[k]), Point<dim>()};
+        for (unsigned int d = 0; d < dim; ++d)
+          particle.position[d] = all[k + 1 + d];
+        damaged.emplace_back(particle, all[k + dim + 1]);
+      }
     std::sort(damaged.begin(), damaged.end(), [](const auto &a, const auto &b) {
       return a.first.id < b.first.id;
     });
