@@ -154,6 +154,7 @@ namespace PeriArlequin
         previous.emplace();
         previous->owned_index.assign(n_owned, numbers::invalid_unsigned_int);
         previous->touched.assign(ghosts.n_total(), true);
+        bool all_held = true;
         for (unsigned int p = 0; p < before->ids.size(); ++p)
           if (const unsigned int i = ghosts.local_index(before->ids[p]);
               i != numbers::invalid_unsigned_int)
@@ -162,6 +163,11 @@ namespace PeriArlequin
               if (i < n_owned)
                 previous->owned_index[i] = p;
             }
+          else
+            all_held = false;
+        // A particle that left would change families that no new particle touches: keep none.
+        if (!all_held)
+          previous.reset();
       }
     bonds.build(lattice,
                 ghosts,
