@@ -210,26 +210,52 @@ namespace PeriArlequin
   {
     // The particles near the overlap: pure PD (alpha = 0) with a bond to the overlap or the
     // slave layer (alpha > 0), owned and ghosts.
-    const unsigned int  n_owned = ghosts.n_owned();
-    const auto          x       = ghosts.reference_positions();
+    const unsigned int n_owned = ghosts.n_owned();
+    const auto         x       = ghosts.reference_positions();
+    // The owned particles that can store a bond with a particle that @p flagged picks (owned
+    // or ghost): on the stencil, the picked and those within the stencil of one; else all.
+    // The loops below skip the others, which hold nothing they look for.
+    const auto within_reach_of = [&](const auto &flagged) {
+      std::vector<std::uint8_t> reach(n_owned, bonds.uses_stencil() ? 0 : 1);
+      if (bonds.uses_stencil())
+        {
+          const auto &layout = bonds.stencil_layout();
+          for (unsigned int t = 0; t < ghosts.n_total(); ++t)
+            if (flagged(t))
+              {
+                if (t < n_owned)
+                  reach[t] = 1;
+                for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
+                  if (const unsigned int j = layout.neighbor(t, k); j < n_owned)
+                    reach[j] = 1;
+              }
+        }
+      return reach;
+    };
     std::vector<double> near(ghosts.n_total(), 0.);
     bool                cut = false, any_weighted = false;
     Point<dim>          cut_at;
+    const auto next_to_weighted = within_reach_of([&](unsigned int t) { return alpha[t] > 0; });
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          const unsigned int j = bonds.neighbor(i, n);
-          any_weighted         = any_weighted || alpha[i] > 0;
-          if (alpha[i] == 0 && alpha[j] > 0)
-            near[i] = 1;
-          if (j < n_owned && alpha[j] == 0 && alpha[i] > 0)
-            near[j] = 1;
-          if ((alpha[i] > 0 || alpha[j] > 0) && bonds.state[n] == BondFamilies<dim>::broken && !cut)
-            {
-              cut    = true;
-              cut_at = alpha[i] > 0 ? x[i] : x[j];
-            }
-        }
+      {
+        if (!next_to_weighted[i])
+          continue;
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          {
+            const unsigned int j = bonds.neighbor(i, n);
+            any_weighted         = any_weighted || alpha[i] > 0;
+            if (alpha[i] == 0 && alpha[j] > 0)
+              near[i] = 1;
+            if (j < n_owned && alpha[j] == 0 && alpha[i] > 0)
+              near[j] = 1;
+            if ((alpha[i] > 0 || alpha[j] > 0) && bonds.state[n] == BondFamilies<dim>::broken &&
+                !cut)
+              {
+                cut    = true;
+                cut_at = alpha[i] > 0 ? x[i] : x[j];
+              }
+          }
+      }
     if (Utilities::MPI::logical_or(cut, communicator))
       {
         std::ostringstream where;
@@ -247,13 +273,18 @@ namespace PeriArlequin
     // Their bonds among themselves and into the pure PD zone, intact now (those into the
     // overlap are unbreakable).
     bonds_near_overlap.clear();
+    const auto next_to_near = within_reach_of([&](unsigned int t) { return near[t] > 0; });
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        {
-          const unsigned int j = bonds.neighbor(i, n);
-          if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
-            bonds_near_overlap.emplace_back(near[i] > 0 ? i : j, n);
-        }
+      {
+        if (!next_to_near[i])
+          continue;
+        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+          {
+            const unsigned int j = bonds.neighbor(i, n);
+            if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
+              bonds_near_overlap.emplace_back(near[i] > 0 ? i : j, n);
+          }
+      }
   }
 
   template <int dim>
