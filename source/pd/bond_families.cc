@@ -284,16 +284,30 @@ namespace PeriArlequin
           keep[i] = last = p;
         }
     // A touched particle changes its own family and those of its stencil neighbours.
-    for (unsigned int t = 0; t < n_total; ++t)
-      if (previous.touched[t])
-        {
-          if (t < n_owned)
-            keep[t] = numbers::invalid_unsigned_int;
-          for (unsigned int k = 0; k < stencil.size(); ++k)
-            if (const unsigned int j = layout.neighbor(t, k); j < n_owned)
-              keep[j] = numbers::invalid_unsigned_int;
-        }
+    const std::vector<std::uint8_t> changed = owned_within_reach(previous.touched);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (changed[i])
+        keep[i] = numbers::invalid_unsigned_int;
     return keep;
+  }
+
+  template <int dim>
+  std::vector<std::uint8_t>
+  BondFamilies<dim>::owned_within_reach(const std::vector<bool> &picked) const
+  {
+    AssertDimension(picked.size(), n_total);
+    std::vector<std::uint8_t> reach(n_owned, stencil_active ? 0 : 1);
+    if (stencil_active)
+      for (unsigned int t = 0; t < n_total; ++t)
+        if (picked[t])
+          {
+            if (t < n_owned)
+              reach[t] = 1;
+            for (unsigned int k = 0; k < stencil.size(); ++k)
+              if (const unsigned int j = layout.neighbor(t, k); j < n_owned)
+                reach[j] = 1;
+          }
+    return reach;
   }
 
   template <int dim>

@@ -210,32 +210,17 @@ namespace PeriArlequin
   {
     // The particles near the overlap: pure PD (alpha = 0) with a bond to the overlap or the
     // slave layer (alpha > 0), owned and ghosts.
-    const unsigned int n_owned = ghosts.n_owned();
-    const auto         x       = ghosts.reference_positions();
-    // The owned particles that can store a bond with a particle that @p flagged picks (owned
-    // or ghost): on the stencil, the picked and those within the stencil of one; else all.
-    // The loops below skip the others, which hold nothing they look for.
-    const auto within_reach_of = [&](const auto &flagged) {
-      std::vector<std::uint8_t> reach(n_owned, bonds.uses_stencil() ? 0 : 1);
-      if (bonds.uses_stencil())
-        {
-          const auto &layout = bonds.stencil_layout();
-          for (unsigned int t = 0; t < ghosts.n_total(); ++t)
-            if (flagged(t))
-              {
-                if (t < n_owned)
-                  reach[t] = 1;
-                for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
-                  if (const unsigned int j = layout.neighbor(t, k); j < n_owned)
-                    reach[j] = 1;
-              }
-        }
-      return reach;
-    };
+    const unsigned int  n_owned = ghosts.n_owned();
+    const auto          x       = ghosts.reference_positions();
     std::vector<double> near(ghosts.n_total(), 0.);
     bool                cut = false, any_weighted = false;
     Point<dim>          cut_at;
-    const auto next_to_weighted = within_reach_of([&](unsigned int t) { return alpha[t] > 0; });
+    // Only the families that can hold a bond to a weighted particle are scanned (all of them
+    // on the bond lists).
+    std::vector<bool> weighted(ghosts.n_total());
+    for (unsigned int t = 0; t < weighted.size(); ++t)
+      weighted[t] = alpha[t] > 0;
+    const std::vector<std::uint8_t> next_to_weighted = bonds.owned_within_reach(weighted);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         if (!next_to_weighted[i])
@@ -273,7 +258,10 @@ namespace PeriArlequin
     // Their bonds among themselves and into the pure PD zone, intact now (those into the
     // overlap are unbreakable).
     bonds_near_overlap.clear();
-    const auto next_to_near = within_reach_of([&](unsigned int t) { return near[t] > 0; });
+    std::vector<bool> near_flag(ghosts.n_total());
+    for (unsigned int t = 0; t < near_flag.size(); ++t)
+      near_flag[t] = near[t] > 0;
+    const std::vector<std::uint8_t> next_to_near = bonds.owned_within_reach(near_flag);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         if (!next_to_near[i])

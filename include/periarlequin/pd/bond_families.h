@@ -171,6 +171,14 @@ namespace PeriArlequin
       return {(2. * (bond.xi * eta) + eta * eta) / (length + bond.length), length};
     }
 
+    /**
+     * Per owned particle, 1 if it or a held particle within its stencil is @p picked (one
+     * flag per owned and ghost particle): the particles whose stored bonds can touch a picked
+     * one. On the bond lists (no stencil to search) every owned particle is 1.
+     */
+    std::vector<std::uint8_t>
+    owned_within_reach(const std::vector<bool> &picked) const;
+
     /** Bonds stored here. */
     std::size_t
     n_bonds() const
