@@ -42,6 +42,20 @@ namespace PeriArlequin
                   "share per cell) when the most loaded rank carries more than (1 + this) "
                   "times the mean load; particles, broken bonds and the FE field follow "
                   "their cells. 0: after every conversion [-].");
+      entries.add("Settling time",
+                  settling_time,
+                  Patterns::Double(),
+                  "New particles take the FE field, which is no PD equilibrium where the PD "
+                  "state differs from the classical one (the surface layer of a free or a "
+                  "loaded edge, a steep wave); switched to the PD forces at once, they would "
+                  "overshoot, by enough to break bonds in a brittle material under a strong "
+                  "wave. Instead, each new pure-PD particle carries the difference between "
+                  "the FE and the PD acceleration as a force that fades out (half a cosine) "
+                  "over this time, so it settles into the PD state smoothly. The forces add "
+                  "up to zero (momentum is kept); their work counts as external work. 0 (the "
+                  "default): automatic, ten times the time a longitudinal wave needs to cross "
+                  "a horizon (several periods of the surface layer's vibration); negative: "
+                  "none, the new particles take the PD forces at once [s].");
     }
     template struct AdaptivePDZone<2>;
     template struct AdaptivePDZone<3>;
@@ -109,7 +123,7 @@ namespace PeriArlequin
   template <int dim>
   void
   PDZoneGrowth<dim>::initialize(const FEZone<dim> &fe_zone,
-                                const PDZone<dim> &pd_zone,
+                                PDZone<dim>       &pd_zone,
                                 const double       time_step)
   {
     const auto                 &pd       = pd_zone.get_parameters();
@@ -119,6 +133,10 @@ namespace PeriArlequin
     context.trigger_distance             = 2. * (pd.horizon() + 0.5 * pd.lattice_spacing) +
                                material.longitudinal_wave_speed(dim) * time_step;
     context.crack_speed_bound = material.shear_wave_speed();
+    context.settling_time     = parameters.settling_time == 0 ?
+                                  10. * pd.horizon() / material.longitudinal_wave_speed(dim) :
+                                  std::max(parameters.settling_time, 0.);
+    pd_zone.set_settling_time(context.settling_time);
     for (const auto &criterion : criteria)
       criterion->initialize(fe_zone, pd_zone, context);
   }
@@ -267,6 +285,10 @@ namespace PeriArlequin
                              interpolation.interpolate(fe_state.velocity, r),
                              interpolation.interpolate(fe_state.acceleration, r));
     pd_zone.update_ghost_displacements();
+    // The accelerations of the FE field (new particles) and of the state before (the others).
+    const auto                        a = pd_zone.get_state().accelerations();
+    const std::vector<Tensor<1, dim>> acceleration_before(a.begin(),
+                                                          a.begin() + pd_zone.n_owned_particles());
 
     phase.emplace(timer, "growth: FE zone");
     fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); });
@@ -299,9 +321,54 @@ namespace PeriArlequin
           pd_zone.add_to_velocity(i, correction);
       }
 
+    if (context.settling_time > 0)
+      settle_new_particles(pd_zone, previous, acceleration_before, time);
+
     conversion_energy += total_energy() - energy_before;
     converted_cells += boxes.size();
     return boxes.size();
+  }
+
+  template <int dim>
+  void
+  PDZoneGrowth<dim>::settle_new_particles(PDZone<dim>                       &pd_zone,
+                                          const std::vector<unsigned int>   &previous,
+                                          const std::vector<Tensor<1, dim>> &acceleration_before,
+                                          const double                       time) const
+  {
+    // The new pure-PD particles (a weighted one is held to the FE field by the coupling); the
+    // force density that gives them back the acceleration of the FE field, without its
+    // mass-weighted mean, so that the forces do not change the momentum.
+    const auto                  a      = pd_zone.get_state().accelerations();
+    const auto                  alpha  = pd_zone.blending_weights();
+    const double                volume = pd_zone.particle_volume();
+    std::vector<unsigned int>   settling;
+    std::vector<Tensor<1, dim>> force;
+    Tensor<1, dim>              total_force;
+    double                      total_mass = 0;
+    for (unsigned int i = 0; i < pd_zone.n_owned_particles(); ++i)
+      if (previous[i] == numbers::invalid_unsigned_int && alpha[i] == 0 && !pd_zone.is_slave(i) &&
+          !pd_zone.is_prescribed(i))
+        {
+          const double mass = pd_zone.particle_mass(i);
+          settling.push_back(i);
+          force.push_back((mass / volume) * (acceleration_before[i] - a[i]));
+          total_force += volume * force.back();
+          total_mass += mass;
+        }
+    const MPI_Comm communicator = pd_zone.get_communicator();
+    total_mass                  = Utilities::MPI::sum(total_mass, communicator);
+    if (total_mass == 0)
+      return;
+    const Tensor<1, dim> mean_acceleration =
+      Utilities::MPI::sum(total_force, communicator) / total_mass;
+    for (unsigned int s = 0; s < settling.size(); ++s)
+      {
+        const unsigned int i = settling[s];
+        pd_zone.start_settling(i,
+                               force[s] - (pd_zone.particle_mass(i) / volume) * mean_acceleration,
+                               time);
+      }
   }
 
   template <int dim>

@@ -190,7 +190,7 @@ namespace PeriArlequin
     prescribed.reinit(ghosts.reference_positions(), n_owned);
     find_boundary_layers();
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
-                  !prescribed.empty(communicator);
+                  !prescribed.empty(communicator) || !settling_force.empty();
   }
 
   template <int dim>

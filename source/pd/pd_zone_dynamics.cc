@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <limits>
 
 namespace PeriArlequin
 {
@@ -144,8 +145,9 @@ namespace PeriArlequin
               continue;
             }
           // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
-          const Tensor<1, dim> b =
-            loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
+          Tensor<1, dim> b = loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
+          if (!settling_force.empty())
+            b += settling_weight(i, time) * settling_force[i];
           a[i]             = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
           applied_force[i] = volume * b;
         }
@@ -160,6 +162,42 @@ namespace PeriArlequin
     prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
       applied_force[i][d] = particle_mass(i) * a[i][d] - blended_force(i)[d];
     });
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::settling_weight(const unsigned int i, const double time) const
+  {
+    const double fraction = (time - settling_start[i]) / settling_time;
+    if (!(fraction < 1.))
+      return 0.;
+    return 0.5 * (1. + std::cos(numbers::PI * std::max(fraction, 0.)));
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_settling_time(const double duration)
+  {
+    settling_time = duration;
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::start_settling(const unsigned int i, const Tensor<1, dim> &force, const double time)
+  {
+    Assert(settling_time > 0, ExcMessage("Set a positive settling time first."));
+    Assert(!slave[i], ExcMessage("A slave follows the FE field; it cannot settle."));
+    if (settling_force.empty())
+      {
+        settling_force.assign(ghosts.n_owned(), Tensor<1, dim>());
+        settling_start.assign(ghosts.n_owned(), -std::numeric_limits<double>::infinity());
+      }
+    // A force that has not faded out yet fades out again from its present value.
+    settling_force[i] = settling_weight(i, time) * settling_force[i] + force;
+    settling_start[i] = time;
+    state.accelerations()[i] += force / (material.density * mass_weight[i]);
+    applied_force[i] += particle_volume() * force;
+    tracks_work = true;
   }
 
   template <int dim>

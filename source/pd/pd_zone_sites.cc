@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <iterator>
+#include <limits>
 #include <optional>
 
 namespace PeriArlequin
@@ -183,14 +184,16 @@ namespace PeriArlequin
   PDZone<dim>::extend(const SiteFilter &grown_extent, const CellFilter &may_hold_new_sites)
   {
     // What the rebuild must keep, by particle id: kinematics, applied forces (the next step's
-    // work increment starts from them) and the bonds broken so far.
+    // work increment starts from them), settling forces and the bonds broken so far.
     const unsigned int                       n_old        = ghosts.n_owned();
     const auto                               old_ids_view = ghosts.ids();
     const std::vector<types::particle_index> old_ids(old_ids_view.begin(),
                                                      old_ids_view.begin() + n_old);
-    const ParticleState<dim>                 old_state         = state;
-    const std::vector<Tensor<1, dim>>        old_applied_force = applied_force;
-    const auto                               broken            = bonds.broken_bonds(old_ids_view);
+    const ParticleState<dim>                 old_state          = state;
+    const std::vector<Tensor<1, dim>>        old_applied_force  = applied_force;
+    const std::vector<Tensor<1, dim>>        old_settling_force = settling_force;
+    const std::vector<double>                old_settling_start = settling_start;
+    const auto                               broken             = bonds.broken_bonds(old_ids_view);
     const HeldBefore                         held_before{{old_ids_view.begin(), old_ids_view.end()},
                                  unbreakable_particles()};
 
@@ -206,6 +209,11 @@ namespace PeriArlequin
     build_particle_structures(broken, &held_before);
 
     std::vector<unsigned int> previous(ghosts.n_owned(), numbers::invalid_unsigned_int);
+    if (!settling_force.empty())
+      {
+        settling_force.assign(ghosts.n_owned(), Tensor<1, dim>());
+        settling_start.assign(ghosts.n_owned(), -std::numeric_limits<double>::infinity());
+      }
     for (unsigned int j = 0; j < n_old; ++j)
       {
         const unsigned int i     = ghosts.local_index(old_ids[j]);
@@ -214,6 +222,11 @@ namespace PeriArlequin
         state.velocities()[i]    = old_state.velocities()[j];
         state.accelerations()[i] = old_state.accelerations()[j];
         applied_force[i]         = old_applied_force[j];
+        if (!settling_force.empty())
+          {
+            settling_force[i] = old_settling_force[j];
+            settling_start[i] = old_settling_start[j];
+          }
       }
     update_ghost_displacements();
     return previous;

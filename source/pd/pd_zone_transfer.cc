@@ -6,7 +6,10 @@
 #include <boost/serialization/array.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <set>
 #include <unordered_map>
 
@@ -16,14 +19,15 @@ namespace PeriArlequin
   {
     /**
      * What a particle takes along to its new owner in a repartition or a checkpoint: its
-     * kinematics, applied force, strain energy density (so the energies of the step that
-     * repartitioned are those of its force pass) and broken bonds.
+     * kinematics, applied force, settling force and its start, strain energy density (so the
+     * energies of the step that repartitioned are those of its force pass) and broken bonds.
      */
     template <int dim>
     struct TransferredParticle
     {
       types::particle_index              id;
-      std::array<Tensor<1, dim>, 4>      kinematics;
+      std::array<Tensor<1, dim>, 5>      kinematics;
+      double                             settling_start;
       double                             energy_density;
       std::vector<types::particle_index> broken_partners;
 
@@ -31,7 +35,7 @@ namespace PeriArlequin
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &id &kinematics &energy_density &broken_partners;
+        archive &id &kinematics &settling_start &energy_density &broken_partners;
       }
     };
   } // namespace
@@ -44,12 +48,16 @@ namespace PeriArlequin
     for (const auto &particle : particle_handler.particles_in_cell(
            typename Triangulation<dim>::active_cell_iterator(cell)))
       {
-        const unsigned int       i = ghosts.local_index(particle.get_id());
+        const unsigned int       i        = ghosts.local_index(particle.get_id());
+        const bool               settling = !settling_force.empty();
         TransferredParticle<dim> record{particle.get_id(),
                                         {{state.displacements()[i],
                                           state.velocities()[i],
                                           state.accelerations()[i],
-                                          applied_force[i]}},
+                                          applied_force[i],
+                                          settling ? settling_force[i] : Tensor<1, dim>()}},
+                                        settling ? settling_start[i] :
+                                                   -std::numeric_limits<double>::infinity(),
                                         energy_density[i],
                                         broken_partners[i]};
         records.push_back(std::move(record));
@@ -136,6 +144,8 @@ namespace PeriArlequin
     state_handle = numbers::invalid_unsigned_int;
 
     build_particle_structures();
+    settling_force.assign(ghosts.n_owned(), Tensor<1, dim>());
+    settling_start.assign(ghosts.n_owned(), -std::numeric_limits<double>::infinity());
     const auto                                   ids = ghosts.ids();
     std::set<typename BondFamilies<dim>::IdPair> broken;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
@@ -144,16 +154,28 @@ namespace PeriArlequin
         AssertThrow(found != received.end(),
                     ExcMessage("A particle arrived without its state in a repartition or "
                                "from a checkpoint."));
-        const auto &[u, v, a, f] = found->second.kinematics;
-        state.displacements()[i] = u;
-        state.velocities()[i]    = v;
-        state.accelerations()[i] = a;
-        applied_force[i]         = f;
-        energy_density[i]        = found->second.energy_density;
+        const auto &[u, v, a, f, s] = found->second.kinematics;
+        state.displacements()[i]    = u;
+        state.velocities()[i]       = v;
+        state.accelerations()[i]    = a;
+        applied_force[i]            = f;
+        settling_force[i]           = s;
+        settling_start[i]           = found->second.settling_start;
+        energy_density[i]           = found->second.energy_density;
         for (const types::particle_index partner : found->second.broken_partners)
           broken.emplace(std::minmax(ids[i], partner));
       }
     bonds.break_bonds(broken, ghosts);
+    const bool settling = std::any_of(settling_start.begin(), settling_start.end(), [](double t) {
+      return std::isfinite(t);
+    });
+    if (settling)
+      tracks_work = true;
+    else
+      {
+        settling_force.clear();
+        settling_start.clear();
+      }
     update_ghost_displacements();
   }
 

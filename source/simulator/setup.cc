@@ -247,7 +247,8 @@ namespace PeriArlequin
               << growth.conversion_distance() << " m of the new damage (a crack at the shear "
               << "speed " << growth.crack_speed_bound << " m/s runs "
               << growth.crack_speed_bound * growth.time_step * growth.check_interval
-              << " m between two checks)" << std::endl;
+              << " m between two checks); new particles settle over " << growth.settling_time
+              << " s" << std::endl;
       }
   }
 

@@ -32,6 +32,11 @@ namespace PeriArlequin
     double trigger_distance = 0;
     /** An upper bound of a crack's speed: the shear-wave speed [m/s]. */
     double crack_speed_bound = 0;
+    /**
+     * The time over which the settling force of a new particle fades out (0: none), see
+     * PDZone::start_settling() [s].
+     */
+    double settling_time = 0;
 
     /**
      * The distance to convert around damage: the trigger distance plus how far a crack can

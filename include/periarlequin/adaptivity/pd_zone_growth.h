@@ -29,6 +29,7 @@ namespace PeriArlequin
       std::string  conversion_criterion = "none";
       unsigned int check_interval       = 10;
       double       imbalance_tolerance  = 0.1;
+      double       settling_time        = 0;
 
       void
       entries(ParameterEntries &entries);
@@ -43,7 +44,10 @@ namespace PeriArlequin
    * in the converted cells); the FE zone drops the DoFs of the converted cells; the caller
    * rebuilds the coupling and the accelerations; the free particles that gained mass take the
    * momentum the two quadratures of the blended mass disagree on, so that a conversion
-   * conserves linear momentum. Existing particles keep their state and broken bonds.
+   * conserves linear momentum. Existing particles keep their state and broken bonds. The new
+   * pure-PD particles settle into the PD state over the settling time (a force that fades out
+   * makes up the difference between the FE and the PD acceleration at first), so that the
+   * switch from the FE to the PD forces makes no overshoot.
    *
    * A crack cannot outrun the zone: besides the criterion's checks every Check interval
    * steps, every step in which a bond breaks within the trigger distance of an FE cell
@@ -76,11 +80,12 @@ namespace PeriArlequin
                  const Parameters::Peridynamics<dim>                   &parameters_of_pd);
 
     /**
-     * The trigger distance and the criterion's automatic defaults from the material and the
-     * time step @p time_step; check the criterion against the zones.
+     * The trigger distance, the settling time (given to @p pd_zone) and the criterion's
+     * automatic defaults from the material and the time step @p time_step; check the
+     * criterion against the zones.
      */
     void
-    initialize(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone, const double time_step);
+    initialize(const FEZone<dim> &fe_zone, PDZone<dim> &pd_zone, const double time_step);
 
     /** Is the criterion asked after step @p step (every Check interval steps)? */
     bool
@@ -142,6 +147,16 @@ namespace PeriArlequin
     flagged_boxes(const FEZone<dim>      &fe_zone,
                   const PDZone<dim>      &pd_zone,
                   std::vector<Point<dim>> new_damage) const;
+    /**
+     * Give the new pure-PD particles (those @p previous does not know) settling forces that
+     * restore @p acceleration_before, the FE field's, from @p time on; their mass-weighted
+     * mean is removed, so the momentum is kept.
+     */
+    void
+    settle_new_particles(PDZone<dim>                       &pd_zone,
+                         const std::vector<unsigned int>   &previous,
+                         const std::vector<Tensor<1, dim>> &acceleration_before,
+                         const double                       time) const;
 
     const Parameters::AdaptivePDZone<dim>                  parameters;
     std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria;

@@ -271,6 +271,20 @@ namespace PeriArlequin
       state.accelerations()[i] += acceleration_change;
     }
     /** @} */
+    /**
+     * Let owned particle @p i settle into the PD state: from @p time on, a force density
+     * @p force [N/m^dim] is added to its load and fades out with a half cosine over the
+     * settling time (set_settling_time()). Its acceleration includes the force at once. An
+     * adaptive zone gives it to new particles: they take the FE field, which is no PD
+     * equilibrium where the PD state differs from the classical one (the surface layer of a
+     * free or loaded edge), and a sudden change of force would make them overshoot. The
+     * force's work counts as external work.
+     */
+    void
+    start_settling(const unsigned int i, const Tensor<1, dim> &force, const double time);
+    /** The time over which a settling force fades out [s]; 0 ends every settling. */
+    void
+    set_settling_time(const double duration);
     /** Internal force density of the owned particles at the last force evaluation [N/m^dim]. */
     ArrayView<const Tensor<1, dim>>
     force_densities() const;
@@ -546,6 +560,16 @@ namespace PeriArlequin
     std::vector<double>        alpha, state_weight, force_weight, mass_weight;
     std::vector<unsigned char> slave;
 
+    /**
+     * Settling force density and its start time of the owned particles (empty while no
+     * particle ever settled), see start_settling().
+     */
+    std::vector<Tensor<1, dim>> settling_force;
+    std::vector<double>         settling_start;
+    double                      settling_time = 0;
+    /** Weight of the settling force of owned particle @p i at @p time (1 at its start). */
+    double
+    settling_weight(const unsigned int i, const double time) const;
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
