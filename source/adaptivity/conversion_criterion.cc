@@ -278,6 +278,7 @@ namespace PeriArlequin
   {
     if (buffer == 0)
       buffer = context.trigger_distance;
+    loaded_boundaries = context.loaded_boundaries;
     if (strain_threshold > 0)
       return;
     strain_threshold = stretch_fraction * pd_zone.get_critical_stretch();
@@ -297,11 +298,12 @@ namespace PeriArlequin
   {
     const unsigned int        degree = fe_zone.get_dof_handler().get_fe(0).degree;
     const std::vector<double> strain = fe_zone.largest_principal_strains(QGauss<dim>(degree + 1));
+    std::vector<bool>         flagged(convert.size(), false);
     std::vector<Point<dim>>   strained;
     for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && strain[cell->active_cell_index()] >= strain_threshold)
         {
-          convert[cell->active_cell_index()] = true;
+          flagged[cell->active_cell_index()] = true;
           strained.push_back(cell->center());
         }
     if (buffer > 0)
@@ -310,8 +312,18 @@ namespace PeriArlequin
         strained = internal::gather_points(strained, pd_zone.get_communicator());
         const double half_cell =
           0.5 * fe_zone.get_dof_handler().begin_active()->diameter() / std::sqrt(dim);
-        internal::mark_cells_near(fe_zone, strained, buffer + half_cell, convert);
+        internal::mark_cells_near(fe_zone, strained, buffer + half_cell, flagged);
       }
+    const auto on_loaded_boundary = [&](const auto &cell) {
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && loaded_boundaries.count(face->boundary_id()) > 0)
+          return true;
+      return false;
+    };
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && flagged[cell->active_cell_index()] &&
+          !on_loaded_boundary(cell))
+        convert[cell->active_cell_index()] = true;
   }
 
   template <int dim>

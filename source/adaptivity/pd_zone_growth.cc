@@ -122,9 +122,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZoneGrowth<dim>::initialize(const FEZone<dim> &fe_zone,
-                                PDZone<dim>       &pd_zone,
-                                const double       time_step)
+  PDZoneGrowth<dim>::initialize(const FEZone<dim>      &fe_zone,
+                                PDZone<dim>            &pd_zone,
+                                const ProblemData<dim> &data,
+                                const double            time_step)
   {
     const auto                 &pd       = pd_zone.get_parameters();
     const Parameters::Material &material = fe_zone.get_material();
@@ -137,6 +138,9 @@ namespace PeriArlequin
                                   10. * pd.horizon() / material.longitudinal_wave_speed(dim) :
                                   std::max(parameters.settling_time, 0.);
     pd_zone.set_settling_time(context.settling_time);
+    for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
+      if (data.boundary_conditions[b].type != BoundaryType::free)
+        context.loaded_boundaries.insert(b);
     for (const auto &criterion : criteria)
       criterion->initialize(fe_zone, pd_zone, context);
   }

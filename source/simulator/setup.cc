@@ -132,7 +132,7 @@ namespace PeriArlequin
     if (blending)
       coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
     if (zone_growth)
-      zone_growth->initialize(*fe_zone, *pd_zone, dt);
+      zone_growth->initialize(*fe_zone, *pd_zone, problem_data, dt);
     stable_time_step =
       std::min(stable_time_step,
                pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));

@@ -110,11 +110,11 @@ int
 main(int argc, char **argv)
 {
   return run_test(argc, argv, [] {
-    auto        reference = make_simulator<2>(spall_strip_text("pure PD"));
-    const Spall pure_pd   = run_to_end(*reference);
-    auto        adaptive  = make_simulator<2>(spall_strip_text("adaptive"));
-    const Spall grown     = run_to_end(*adaptive);
-    const double horizon  = 3.015 * 5e-4;
+    auto         reference = make_simulator<2>(spall_strip_text("pure PD"));
+    const Spall  pure_pd   = run_to_end(*reference);
+    auto         adaptive  = make_simulator<2>(spall_strip_text("adaptive"));
+    const Spall  grown     = run_to_end(*adaptive);
+    const double horizon   = 3.015 * 5e-4;
     // The automatic settling time: ten times a horizon over the longitudinal wave speed of
     // plane stress.
     const double wave_speed    = std::sqrt(72e9 / (2440 * (1 - 0.22 * 0.22)));
@@ -122,10 +122,7 @@ main(int argc, char **argv)
 
     check("pure PD: the strip spalls", pure_pd.onset_time > 0, 1, 0);
     check("adaptive: reaches the end time", adaptive->get_time() > 2.3e-5 * (1 - 1e-9), 1, 0);
-    check("spall onset time [s]",
-          grown.onset_time,
-          pure_pd.onset_time,
-          0.5 * settling_time);
+    check("spall onset time [s]", grown.onset_time, pure_pd.onset_time, 0.5 * settling_time);
     check("spall onset place x [m]", grown.onset_x, pure_pd.onset_x, 2 * horizon);
     check("broken bonds beyond x = 50 mm at the end, adaptive / pure PD",
           grown.broken_bonds / pure_pd.broken_bonds,

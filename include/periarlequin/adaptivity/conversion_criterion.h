@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 namespace PeriArlequin
@@ -37,6 +38,8 @@ namespace PeriArlequin
      * PDZone::start_settling() [s].
      */
     double settling_time = 0;
+    /** The boundary ids that carry a traction or a prescribed displacement. */
+    std::set<types::boundary_id> loaded_boundaries;
 
     /**
      * The distance to convert around damage: the trigger distance plus how far a crack can
@@ -179,7 +182,10 @@ namespace PeriArlequin
    * Gauss points (the stretch of the worst-aligned bond) reaches "Strain", or, if that is 0,
    * "Fraction of critical stretch" times the fracture criterion's critical stretch. Cells
    * next to a flagged cell (within "Buffer" [m] of it, by default the trigger distance) are
-   * flagged too, so that a crack that starts there is inside the zone.
+   * flagged too, so that a crack that starts there is inside the zone. Cells on a boundary
+   * that carries a traction or a displacement are left to FE: in PD the first particle layers
+   * carry such a load with about twice the continuum's strain (the surface effect), so a
+   * converted loaded edge breaks bonds the continuum would not, right next to the band.
    */
   template <int dim>
   class StrainCriterion : public ConversionCriterion<dim>
@@ -202,9 +208,10 @@ namespace PeriArlequin
                std::vector<bool> &convert) const override;
 
   private:
-    double strain_threshold = 0;
-    double stretch_fraction = 0.5;
-    double buffer           = 0;
+    double                       strain_threshold = 0;
+    double                       stretch_fraction = 0.5;
+    double                       buffer           = 0;
+    std::set<types::boundary_id> loaded_boundaries;
   };
 } // namespace PeriArlequin
 

@@ -80,12 +80,15 @@ namespace PeriArlequin
                  const Parameters::Peridynamics<dim>                   &parameters_of_pd);
 
     /**
-     * The trigger distance, the settling time (given to @p pd_zone) and the criterion's
-     * automatic defaults from the material and the time step @p time_step; check the
-     * criterion against the zones.
+     * The trigger distance, the settling time (given to @p pd_zone), the loaded boundaries of
+     * @p data and the criterion's automatic defaults from the material and the time step
+     * @p time_step; check the criterion against the zones.
      */
     void
-    initialize(const FEZone<dim> &fe_zone, PDZone<dim> &pd_zone, const double time_step);
+    initialize(const FEZone<dim>      &fe_zone,
+               PDZone<dim>            &pd_zone,
+               const ProblemData<dim> &data,
+               const double            time_step);
 
     /** Is the criterion asked after step @p step (every Check interval steps)? */
     bool
