@@ -12,6 +12,8 @@
 //  - Buffer = 0 takes the growth's trigger distance: given as 0.015 m, the 120 cells again;
 //    without one (0), no buffer: 100.
 //  - Strain = 1e-3 (above 2 a x_c = 3.8e-4 everywhere): none.
+//  - Strain 2e-4 with boundary 1 (x = 0.2) loaded: its column of 20 cells stays FE, 80; with
+//    Buffer = 0.015 m, 100.
 // Counts over all ranks, exact; the same on 1 and 2 ranks.
 
 #include <periarlequin/adaptivity/conversion_criterion.h>
@@ -38,16 +40,18 @@ main(int argc, char **argv)
     simulator->setup();
     const auto &fe    = simulator->get_fe_zone();
     const auto &pd    = *simulator->get_pd_zone();
-    const auto  count = [&](const std::string &strain,
-                           const std::string &buffer,
-                           const double       trigger_distance = 0) {
+    const auto  count = [&](const std::string                  &strain,
+                           const std::string                  &buffer,
+                           const double                        trigger_distance  = 0,
+                           const std::set<types::boundary_id> &loaded_boundaries = {}) {
       ParameterHandler prm;
       PeriArlequin::ConversionCriterionRegistry<2>::declare_parameters(prm);
       prm.parse_input_from_string("subsection strain\n  set Strain = " + strain +
                                   "\n  set Buffer = " + buffer + "\nend\n");
       auto criterion = PeriArlequin::ConversionCriterionRegistry<2>::create("strain", prm);
       PeriArlequin::GrowthContext context;
-      context.trigger_distance = trigger_distance;
+      context.trigger_distance  = trigger_distance;
+      context.loaded_boundaries = loaded_boundaries;
       criterion->initialize(fe, pd, context);
       std::vector<bool> convert(fe.get_dof_handler().get_triangulation().n_active_cells(), false);
       criterion->mark_cells(fe, pd, convert);
@@ -60,5 +64,10 @@ main(int argc, char **argv)
           120,
           0);
     check("Strain 1e-3: cells flagged", count("1e-3", "0"), 0, 0);
+    check("Strain 2e-4, boundary 1 loaded: cells flagged", count("2e-4", "0", 0, {1}), 80, 0);
+    check("Strain 2e-4, Buffer 0.015 m, boundary 1 loaded: cells flagged",
+          count("2e-4", "0.015", 0, {1}),
+          100,
+          0);
   });
 }
