@@ -134,10 +134,32 @@ namespace PeriArlequin
     context.trigger_distance             = 2. * (pd.horizon() + 0.5 * pd.lattice_spacing) +
                                material.longitudinal_wave_speed(dim) * time_step;
     context.crack_speed_bound = material.shear_wave_speed();
-    context.settling_time     = parameters.settling_time == 0 ?
-                                  10. * pd.horizon() / material.longitudinal_wave_speed(dim) :
-                                  std::max(parameters.settling_time, 0.);
+    // A horizon over the longitudinal wave speed: the time scale of the surface layer.
+    const double horizon_time = pd.horizon() / material.longitudinal_wave_speed(dim);
+    context.settling_time =
+      parameters.settling_time == 0 ? 10. * horizon_time : std::max(parameters.settling_time, 0.);
     pd_zone.set_settling_time(context.settling_time);
+
+    notes.clear();
+    if (pd.fracture && Utilities::split_string_list(parameters.conversion_criterion) ==
+                         std::vector<std::string>{"damage distance"})
+      notes.emplace_back(
+        "'damage distance' converts cells around damage only: a crack that starts away from "
+        "it (at a far free edge under reflected tension, inside a struck region) happens in "
+        "FE, where nothing breaks (the FE strain check warns where the FE strain reaches the "
+        "critical stretch). 'Conversion criterion = damage distance, strain' also converts "
+        "the cells whose strain nears the critical stretch.");
+    if (context.settling_time < 5. * horizon_time)
+      {
+        std::ostringstream note;
+        note << "new particles that settle over less than five horizons over c_L ("
+             << 5. * horizon_time
+             << " s here; 0 when they do not settle) overshoot the PD state of free and "
+                "loaded edges and of strong waves, by enough to break bonds in brittle "
+                "materials (Adaptive PD zone/Settling time; 0 is the automatic "
+             << 10. * horizon_time << " s).";
+        notes.push_back(note.str());
+      }
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       if (data.boundary_conditions[b].type != BoundaryType::free)
         context.loaded_boundaries.insert(b);
@@ -150,6 +172,13 @@ namespace PeriArlequin
   PDZoneGrowth<dim>::get_context() const
   {
     return context;
+  }
+
+  template <int dim>
+  const std::vector<std::string> &
+  PDZoneGrowth<dim>::get_notes() const
+  {
+    return notes;
   }
 
   template <int dim>

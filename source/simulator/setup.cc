@@ -249,6 +249,8 @@ namespace PeriArlequin
               << growth.crack_speed_bound * growth.time_step * growth.check_interval
               << " m between two checks); new particles settle over " << growth.settling_time
               << " s" << std::endl;
+        for (const std::string &note : zone_growth->get_notes())
+          pcout << "  Note: " << note << std::endl;
       }
   }
 

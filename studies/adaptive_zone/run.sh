@@ -6,17 +6,19 @@
 # <work>/mixed_mode), and the zone figures of the shipped case
 # parameter_files/adaptive_crack_branching_2d.prm (scripts/plot_zone.sh, into <work>/zone):
 #   studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]
-# <parts> (default: all): branching, kink, figures, impact. About 40 minutes for branching, 50
-# for kink and 2 for impact on one core. impact: the impact-driven mode II plate of
-# impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with the strain
-# criterion added; checked every 50 steps), one thread each, one after the other; prints the
-# table of the README and draws the damage maps (into <work>/impact).
+# <parts> (default: all): branching, kink, figures, impact, spall. About 40 minutes for
+# branching, 50 for kink, 2 for impact and 1 for spall on one core. impact: the impact-driven
+# mode II plate of impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with
+# the strain criterion added; checked every 50 steps), one thread each, one after the other;
+# prints the table of the README and draws the damage maps (into <work>/impact). spall: the
+# strip of spall_strip.prm as pure PD and adaptive from PD on [40, 50] mm (damage distance;
+# with strain; with strain and without settling); prints the table of the README.
 set -euo pipefail
 usage="usage: studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-parts=${4:-branching kink figures impact}
+parts=${4:-branching kink figures impact spall}
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 mkdir -p "$work"
@@ -93,6 +95,56 @@ for part in $parts; do
       done
       cd "$top"
       echo "wrote the impact runs and figures to $work/impact" ;;
+    spall)
+      mkdir -p "$work/spall"
+      cd "$work/spall"
+      for run in pd damage_distance strain strain_unsettled; do
+        {
+          echo "include $here/spall_strip.prm"
+          if [ "$run" != pd ]; then
+            echo "subsection Peridynamics"
+            echo "  set Region = 0.04, 0 : 0.05, 0.01"
+            echo "end"
+            echo "subsection Coupling"
+            echo "  set Method        = weak"
+            echo "  set Blending      = force"
+            echo "  set Overlap width = 0.005"
+            echo "end"
+            echo "subsection Adaptive PD zone"
+            echo "  set Conversion criterion = damage distance$([ "$run" != damage_distance ] && echo ", strain")"
+            [ "$run" = strain_unsettled ] && echo "  set Settling time = -1"
+            echo "end"
+          fi
+          echo "subsection Output"
+          echo "  set Directory = $work/spall/$run"
+          echo "end"
+        } > "$run.prm"
+        DEAL_II_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" \
+          "$build/periarlequin" "$run.prm" > "$run.log" 2>&1 || true
+      done
+      echo "| run | end [µs] | first break beyond x = 50 mm [µs] | its mean x [mm] | damaged particles beyond 50 mm at the end, mean x [mm] | broken bonds at the end | PD particles at the end |"
+      echo "|---|---|---|---|---|---|---|"
+      for run in pd damage_distance strain strain_unsettled; do
+        # The damage maps in time order: the first with damage beyond mid-length, and the last.
+        first=$(for f in "$run"/solution_damage_*.csv; do
+                  awk -F, 'NR == 1 { t = $0; sub(/^# t = /, "", t); sub(/ s.*/, "", t) }
+                           NR > 2 && $1 > 0.05 && $3 > 0 { n++; x += $1 }
+                           END { if (n > 0) printf "%.2f %.1f\n", 1e6 * t, 1e3 * x / n }' "$f"
+                done | awk 'NR == 1')
+        last=$(ls "$run"/solution_damage_*.csv | tail -1)
+        awk -F, -v run="$run" -v first="${first:--}" -v last="$last" '
+          NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+          { t = $col["time"]; broken = $col["broken_bonds"]; particles = $col["pd_particles"] }
+          END {
+            n = 0; x = 0
+            while ((getline line < last) > 0) { split(line, v, ","); if (v[1] + 0 > 0.05 && v[3] + 0 > 0) { n++; x += v[1] } }
+            split(first, f, " ")
+            printf "| %s | %.2f | %s | %s | %s | %d | %d |\n", run, 1e6 * t, (f[1] == "" ? "-" : f[1]),
+                   (f[2] == "" ? "-" : f[2]), (n > 0 ? sprintf("%.1f (%d)", 1e3 * x / n, n) : "-"), broken, particles }' \
+          "$run/solution_energy.csv"
+      done
+      cd "$top"
+      echo "wrote the spall runs to $work/spall" ;;
     *) echo "unknown part $part" >&2; exit 1 ;;
   esac
 done

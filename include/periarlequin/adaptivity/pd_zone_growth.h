@@ -124,6 +124,13 @@ namespace PeriArlequin
     /** The distances and speeds the growth works with (set by initialize()). */
     const GrowthContext &
     get_context() const;
+    /**
+     * What a user should know about these settings, one sentence each, for the start-up
+     * summary (set by initialize()): cracks the criteria cannot see, a settling too short to
+     * avoid an overshoot.
+     */
+    const std::vector<std::string> &
+    get_notes() const;
 
     /** Cells converted since the start, over all ranks. */
     unsigned int
@@ -164,10 +171,11 @@ namespace PeriArlequin
     const Parameters::AdaptivePDZone<dim>                  parameters;
     std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria;
     /** The particles the grown zone holds: within this distance of its PD part [m]. */
-    const double  particle_reach;
-    GrowthContext context;
-    unsigned int  converted_cells   = 0;
-    double        conversion_energy = 0.;
+    const double             particle_reach;
+    GrowthContext            context;
+    std::vector<std::string> notes;
+    unsigned int             converted_cells   = 0;
+    double                   conversion_energy = 0.;
   };
 } // namespace PeriArlequin
 
