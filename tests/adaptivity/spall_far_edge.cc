@@ -18,7 +18,10 @@
 // Without settling (Settling time = -1) the strain criterion converts the cells at the loaded
 // edge under the pulse, the new particles overshoot the PD state of the edges (in PD the first
 // layer under a traction strains twice the continuum) and break bonds next to the band: the
-// run stops with "Damage reached the overlap" within 5 us. Same checks on 2 ranks.
+// run stops with "Damage reached the overlap" within 5 us. Same checks on 2 ranks, where the
+// adaptive run repartitions after every conversion (Load imbalance tolerance = 0), so the
+// settling forces travel with their particles: it breaks the same bonds beyond mid-length and
+// starts the spall in the same step as on rank 0 alone (exact).
 
 #include "../tests.h"
 
@@ -44,6 +47,7 @@ namespace
            << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
            << "  set Overlap width = 0.005\nend\n"
            << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance, strain\n"
+           << "  set Load imbalance tolerance = 0\n"
            << (zone == "no settling" ? "  set Settling time = -1\n" : "") << "end\n";
     text << "subsection Boundary conditions\n  subsection Boundary 0\n    set Type = traction\n"
          << "    subsection Function\n      set Function constants = P=25e6, tau=4e-6\n"
@@ -65,6 +69,7 @@ namespace
   {
     Spall spall;
     simulator.setup();
+    const MPI_Comm communicator = simulator.get_pd_zone()->get_communicator();
     // Damaged particles beyond the middle: their number and the sum of their x.
     const auto far_damage = [&]() {
       const auto &pd     = *simulator.get_pd_zone();
@@ -77,8 +82,8 @@ namespace
             count += 1;
             sum_x += x[i][0];
           }
-      return std::make_pair(Utilities::MPI::sum(count, MPI_COMM_WORLD),
-                            Utilities::MPI::sum(sum_x, MPI_COMM_WORLD));
+      return std::make_pair(Utilities::MPI::sum(count, communicator),
+                            Utilities::MPI::sum(sum_x, communicator));
     };
     while (simulator.get_step_number() < simulator.get_n_steps())
       {
@@ -101,7 +106,7 @@ namespace
       if (x[i][0] > 0.05)
         for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
           broken += bonds.state[n] == PeriArlequin::BondFamilies<2>::broken;
-    spall.broken_bonds = Utilities::MPI::sum(broken, MPI_COMM_WORLD);
+    spall.broken_bonds = Utilities::MPI::sum(broken, communicator);
     return spall;
   }
 } // namespace
@@ -128,6 +133,28 @@ main(int argc, char **argv)
           grown.broken_bonds / pure_pd.broken_bonds,
           1,
           0.1);
+
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      {
+        Spall alone;
+        if (is_root())
+          {
+            auto serial = make_simulator<2>(spall_strip_text("adaptive"), MPI_COMM_SELF);
+            alone       = run_to_end(*serial);
+          }
+        const auto broadcast = [](const double x) {
+          return Utilities::MPI::broadcast(MPI_COMM_WORLD, x, 0);
+        };
+        check_above("all ranks: repartitions", adaptive->n_repartitions(), 0.5);
+        check("all ranks against rank 0 alone: spall onset time [s]",
+              grown.onset_time,
+              broadcast(alone.onset_time),
+              0);
+        check("all ranks against rank 0 alone: broken bonds beyond x = 50 mm",
+              grown.broken_bonds,
+              broadcast(alone.broken_bonds),
+              0);
+      }
 
     auto        unsettled = make_simulator<2>(spall_strip_text("no settling"));
     std::string message;
