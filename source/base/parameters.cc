@@ -235,6 +235,15 @@ namespace PeriArlequin
         throw_invalid_parameter("Time/Time step", time_step, "a value > 0 [s]");
       if (!(end_time > 0))
         throw_invalid_parameter("Time/End time", end_time, "a value > 0 [s]");
+      // The step counter is an unsigned int; a billion steps is beyond any run of this code.
+      const double max_steps = 1e9;
+      if (!(end_time / time_step <= max_steps))
+        {
+          std::ostringstream allowed;
+          allowed << "at most " << max_steps << " time steps, End time <= " << max_steps * time_step
+                  << " s with Time step = " << time_step << " s";
+          throw_invalid_parameter("Time/End time", end_time, allowed.str());
+        }
     }
 
     void
