@@ -132,9 +132,14 @@ namespace PeriArlequin
   PDZone<dim>::compute_accelerations(const double time)
   {
     const double rho = material.density, volume = particle_volume();
-    const auto   a          = state.accelerations();
-    const bool   loaded     = problem_data->has_body_force || problem_data->has_tractions();
-    const auto   accelerate = [&](const unsigned int first, const unsigned int end) {
+    const auto   a      = state.accelerations();
+    const bool   loaded = problem_data->has_body_force || problem_data->has_tractions();
+    if (!settling_force.empty() && !(time < latest_settling_start + settling_time))
+      {
+        settling_force.clear();
+        settling_start.clear();
+      }
+    const auto accelerate = [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
           // A slave's acceleration is that of the FE field, set by the coupling, and its
@@ -193,8 +198,9 @@ namespace PeriArlequin
         settling_start.assign(ghosts.n_owned(), -std::numeric_limits<double>::infinity());
       }
     // A force that has not faded out yet fades out again from its present value.
-    settling_force[i] = settling_weight(i, time) * settling_force[i] + force;
-    settling_start[i] = time;
+    settling_force[i]     = settling_weight(i, time) * settling_force[i] + force;
+    settling_start[i]     = time;
+    latest_settling_start = std::max(latest_settling_start, time);
     state.accelerations()[i] += force / (material.density * mass_weight[i]);
     applied_force[i] += particle_volume() * force;
     tracks_work = true;

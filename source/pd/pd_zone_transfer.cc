@@ -166,10 +166,10 @@ namespace PeriArlequin
           broken.emplace(std::minmax(ids[i], partner));
       }
     bonds.break_bonds(broken, ghosts);
-    const bool settling = std::any_of(settling_start.begin(), settling_start.end(), [](double t) {
-      return std::isfinite(t);
-    });
-    if (settling)
+    latest_settling_start = -std::numeric_limits<double>::infinity();
+    for (const double start : settling_start)
+      latest_settling_start = std::max(latest_settling_start, start);
+    if (std::isfinite(latest_settling_start))
       tracks_work = true;
     else
       {

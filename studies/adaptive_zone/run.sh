@@ -24,6 +24,18 @@ top=$(cd "$here/../.." && pwd)
 mkdir -p "$work"
 work=$(cd "$work" && pwd)
 
+# The lines that make a pure-PD case adaptive: PD first on <region>, weak coupling with force
+# blending across a band of two FE cells (5 mm), Conversion criterion = <criterion>, then any
+# further lines of subsection "Adaptive PD zone".
+adaptive_lines() {
+  local region=$1 criterion=$2
+  shift 2
+  printf '%s\n' "subsection Peridynamics" "  set Region = $region" "end" \
+    "subsection Coupling" "  set Method        = weak" "  set Blending      = force" \
+    "  set Overlap width = 0.005" "end" \
+    "subsection Adaptive PD zone" "  set Conversion criterion = $criterion" "$@" "end"
+}
+
 for part in $parts; do
   case $part in
     branching)
@@ -48,21 +60,13 @@ for part in $parts; do
       for run in pd adaptive adaptive_strain adaptive_interval50; do
         {
           echo "include $here/impact_mode_ii.prm"
-          if [ "$run" != pd ]; then
-            # PD on the notches and the struck edge between them; a band of two FE cells.
-            echo "subsection Peridynamics"
-            echo "  set Region = 0, 0.07 : 0.0525, 0.13"
-            echo "end"
-            echo "subsection Coupling"
-            echo "  set Method        = weak"
-            echo "  set Blending      = force"
-            echo "  set Overlap width = 0.005"
-            echo "end"
-            echo "subsection Adaptive PD zone"
-            echo "  set Conversion criterion = damage distance$([ "$run" = adaptive_strain ] && echo ", strain")"
-            [ "$run" = adaptive_interval50 ] && echo "  set Check interval = 50"
-            echo "end"
-          fi
+          # PD first on the notches and the struck edge between them.
+          case $run in
+            adaptive) adaptive_lines "0, 0.07 : 0.0525, 0.13" "damage distance" ;;
+            adaptive_strain) adaptive_lines "0, 0.07 : 0.0525, 0.13" "damage distance, strain" ;;
+            adaptive_interval50)
+              adaptive_lines "0, 0.07 : 0.0525, 0.13" "damage distance" "  set Check interval = 50" ;;
+          esac
           echo "subsection Output"
           echo "  set Directory = $work/impact/$run"
           echo "end"
@@ -101,20 +105,12 @@ for part in $parts; do
       for run in pd damage_distance strain strain_unsettled; do
         {
           echo "include $here/spall_strip.prm"
-          if [ "$run" != pd ]; then
-            echo "subsection Peridynamics"
-            echo "  set Region = 0.04, 0 : 0.05, 0.01"
-            echo "end"
-            echo "subsection Coupling"
-            echo "  set Method        = weak"
-            echo "  set Blending      = force"
-            echo "  set Overlap width = 0.005"
-            echo "end"
-            echo "subsection Adaptive PD zone"
-            echo "  set Conversion criterion = damage distance$([ "$run" != damage_distance ] && echo ", strain")"
-            [ "$run" = strain_unsettled ] && echo "  set Settling time = -1"
-            echo "end"
-          fi
+          case $run in
+            damage_distance) adaptive_lines "0.04, 0 : 0.05, 0.01" "damage distance" ;;
+            strain) adaptive_lines "0.04, 0 : 0.05, 0.01" "damage distance, strain" ;;
+            strain_unsettled)
+              adaptive_lines "0.04, 0 : 0.05, 0.01" "damage distance, strain" "  set Settling time = -1" ;;
+          esac
           echo "subsection Output"
           echo "  set Directory = $work/spall/$run"
           echo "end"

@@ -24,6 +24,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <set>
 #include <vector>
@@ -562,11 +563,13 @@ namespace PeriArlequin
 
     /**
      * Settling force density and its start time of the owned particles (empty while no
-     * particle ever settled), see start_settling().
+     * particle settles), see start_settling(), and the latest start: every force has faded
+     * out a settling time after it.
      */
     std::vector<Tensor<1, dim>> settling_force;
     std::vector<double>         settling_start;
-    double                      settling_time = 0;
+    double                      settling_time         = 0;
+    double                      latest_settling_start = -std::numeric_limits<double>::infinity();
     /** Weight of the settling force of owned particle @p i at @p time (1 at its start). */
     double
     settling_weight(const unsigned int i, const double time) const;
