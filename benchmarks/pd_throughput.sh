@@ -3,8 +3,9 @@
 # wall time of the time loop), 2D and 3D, and peak memory per particle. Per case, in the
 # same run and alternated REPEATS times (3): ours with the lattice-stencil kernel on
 # 1 rank x 1 thread, 1 rank x 2 threads, 2 ranks x 1 thread and two independent 1 x 1 runs
-# at once (the machine's ceiling for two cores), ours with the bond-list kernel on
-# 1 rank x 1 thread; in 3D LAMMPS's peri/lps on 1 and 2 ranks when Debian's
+# at once (the machine's ceiling for two cores), with fracture on (critical stretch, a G0 so
+# large that no bond breaks: the cost of the stretch test) on 1 rank x 1 and x 2 threads,
+# ours with the bond-list kernel on 1 rank x 1 thread; in 3D LAMMPS's peri/lps on 1 and 2 ranks when Debian's
 # `lammps` is installed (the same simple cubic lattice: h = 1 mm, horizon 3.015 h,
 # E = 69 GPa, nu = 0.3, rho = 2700, dt = 1e-8 s, small random velocities, no fracture, the
 # same step count).
@@ -29,8 +30,9 @@ have_lammps=false
 if command -v lmp >/dev/null && [ -f "$lammps_input" ]; then have_lammps=true; fi
 
 
-write_prm() { # dim, n per edge, steps, force kernel -> $work/case.<kernel>.prm
-  local dim=$1 n=$2 steps=$3 kernel=$4 L cells lower upper region velocity
+write_prm() { # dim, n per edge, steps, force kernel[, fracture] -> $work/case.<kernel>[.fracture].prm
+  local dim=$1 n=$2 steps=$3 kernel=$4 fracture=${5:-} L cells lower upper region velocity file
+  file="$work/case.${kernel// /_}${fracture:+.fracture}.prm"
   L=$(awk "BEGIN{print $n*1e-3}")
   cells=$(( n / 4 ))
   if [ "$dim" = 3 ]; then
@@ -40,7 +42,7 @@ write_prm() { # dim, n per edge, steps, force kernel -> $work/case.<kernel>.prm
     lower="0, 0"; upper="$L, $L"; cells="$cells, $cells"
     velocity="1e-2*sin(1e5*x*y); 1e-2*cos(3e5*y+x)"
   fi
-  cat > "$work/case.${kernel// /_}.prm" <<PRM
+  cat > "$file" <<PRM
 set Dimension = $dim
 subsection Geometry
   set Lower corner = $lower
@@ -57,6 +59,8 @@ subsection Peridynamics
   set Lattice spacing = 1e-3
   set Horizon factor = 3.015
   set Force kernel = $kernel
+  set Fracture = ${fracture:-false}
+  set Critical energy release rate = 1e12
 end
 subsection Time
   set Time step = 1e-8
@@ -71,7 +75,7 @@ subsection Initial conditions
   end
 end
 PRM
-  silent_output >> "$work/case.${kernel// /_}.prm"
+  silent_output >> "$file"
 }
 
 # ours: prints "bond-updates/s particle-steps/s peak-RSS-kB particles"
@@ -115,11 +119,12 @@ printf "%-32s %-4s %10s %14s %14s\n" code dim particles "bond-upd/s" "particle-s
 declare -A rss_ours rss_lammps n_parts
 # "dim particles-per-edge steps" cases, ';'-separated (CONFIGS overrides).
 IFS=';' read -ra configs <<< "${CONFIGS:-3 22 40;3 46 40;3 67 20;2 100 200;2 316 100;2 1000 20}"
-variants="stencil-1x1 stencil-1x2 stencil-2x1 stencil-pair list-1x1"
+variants="stencil-1x1 stencil-1x2 stencil-2x1 stencil-pair fracture-1x1 fracture-1x2 list-1x1"
 for config in "${configs[@]}"; do
   set -- $config
   dim=$1 n=$2 steps=$3
   write_prm "$dim" "$n" "$steps" stencil
+  write_prm "$dim" "$n" "$steps" stencil true
   write_prm "$dim" "$n" "$steps" "bond list"
   names="$variants"
   if [ "$dim" = 3 ] && $have_lammps; then names="$names lammps-1 lammps-2"; fi
@@ -131,6 +136,8 @@ for config in "${configs[@]}"; do
         stencil-1x2) line=$(run_ours 1 2 "$steps" "$work/case.stencil.prm") ;;
         stencil-2x1) line=$(run_ours 2 1 "$steps" "$work/case.stencil.prm") ;;
         stencil-pair) line=$(run_pair "$steps" "$work/case.stencil.prm") ;;
+        fracture-1x1) line=$(run_ours 1 1 "$steps" "$work/case.stencil.fracture.prm") ;;
+        fracture-1x2) line=$(run_ours 1 2 "$steps" "$work/case.stencil.fracture.prm") ;;
         list-1x1)    line=$(run_ours 1 1 "$steps" "$work/case.bond_list.prm") ;;
         lammps-1)    line=$(run_lammps 1 "$n" "$steps") ;;
         lammps-2)    line=$(run_lammps 2 "$n" "$steps") ;;
@@ -144,6 +151,7 @@ for config in "${configs[@]}"; do
     parts=$(head -1 "$work/result.$v" | awk '{print $4}')
     label=$(echo "$v" | sed -e 's/^stencil-\(.\)x\(.\)/ours stencil, \1 rank x \2 thread/' \
       -e 's/^stencil-pair/ours stencil, 2 x (1 x 1) at once/' \
+      -e 's/^fracture-\(.\)x\(.\)/ours stencil+fracture, \1 x \2/' \
       -e 's/^list-1x1/ours bond list, 1 rank x 1 thread/' -e 's/^lammps-\(.\)/LAMMPS \1 rank/')
     printf "%-32s %-4s %10s %14.3e %14.3e\n" "$label" "${dim}D" "$parts" "$b" "$p"
   done
@@ -152,6 +160,9 @@ for config in "${configs[@]}"; do
   printf "  ratios: stencil/bond list %.2f, 2 threads/1 %.2f, 2 ranks/1 %.2f, 2 independent runs/1 %.2f" \
     "$(ratio stencil-1x1 list-1x1 1)" "$(ratio stencil-1x2 stencil-1x1 1)" "$(ratio stencil-2x1 stencil-1x1 1)" \
     "$(ratio stencil-pair stencil-1x1 1)"
+  # Rates, so off/on is the step time with fracture on over that with it off.
+  printf ", step time fracture on/off: 1 thread %.2f, 2 threads %.2f" \
+    "$(ratio stencil-1x1 fracture-1x1 1)" "$(ratio stencil-1x2 fracture-1x2 1)"
   if [ "$dim" = 3 ] && $have_lammps; then
     printf ", ours/LAMMPS per particle-step on 1 rank %.2f" "$(ratio stencil-1x1 lammps-1 2)"
   fi

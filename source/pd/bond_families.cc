@@ -327,6 +327,34 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::vector<StoredBond>
+  BondFamilies<dim>::break_stencil_bonds(const std::vector<SlotBond> &breaking)
+  {
+    std::vector<StoredBond> stored;
+    stored.reserve(breaking.size());
+    for (const SlotBond &bond : breaking)
+      {
+        // Ghosts are numbered after the owned particles: the end of lower local index is
+        // owned, and stores the bond (see the class documentation).
+        const auto [lower, upper] = layout.ends(bond);
+        const unsigned int owner = std::min(lower, upper), other = std::max(lower, upper);
+        unsigned int       n = family_begin[owner];
+        while (n < family_begin[owner + 1] && neighbor(owner, n) != other)
+          ++n;
+        Assert(n < family_begin[owner + 1] && state[n] == intact,
+               ExcMessage("A bond broken on the stencil is not an intact stored bond."));
+        state[n] = broken;
+        stored.push_back({owner, n});
+      }
+    std::sort(stored.begin(), stored.end(), [](const StoredBond &a, const StoredBond &b) {
+      return a.index < b.index;
+    });
+    if (!stored.empty())
+      layout.clear_bonds(*this, stored);
+    return stored;
+  }
+
+  template <int dim>
   std::set<typename BondFamilies<dim>::IdPair>
   BondFamilies<dim>::broken_bonds(ArrayView<const types::particle_index> ids) const
   {

@@ -10,6 +10,7 @@
 #include <deal.II/base/parallel.h>
 
 #include <algorithm>
+#include <mutex>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #  define PERIARLEQUIN_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
@@ -28,10 +29,11 @@ namespace PeriArlequin
     template <int dim>
     struct Block
     {
-      double              xi[dim];
-      double              length, volume;
-      std::size_t         first, delta;
-      unsigned int        n;
+      double      xi[dim];
+      double      length, volume;
+      std::size_t first, delta;
+      /** The half offset (StencilLayout::half_offsets) and the number of slots. */
+      unsigned int        half, n;
       const std::uint8_t *mask;
       /**
        * Whether the pass may add to both ends inside its vector loop: the ends are at least
@@ -79,6 +81,7 @@ namespace PeriArlequin
             block.length = bond.length;
             block.volume = bond.volume;
             block.delta  = half.delta;
+            block.half   = h;
             block.direct = half.delta >= simd_distance;
             const std::uint8_t *mask =
               layout.mask.data() + run.mask_begin + h * std::size_t(run.length);
@@ -188,13 +191,31 @@ namespace PeriArlequin
         });
     }
 
-    /** Sum of x e V v over the intact bonds of every slot. */
-    template <int dim>
+    /**
+     * Where the moment pass breaks bonds: every breakable bond (state intact, 1) whose
+     * stretch e / |xi| exceeds @p stretch breaks before its term is added, and its slot and
+     * half offset go to @p bonds (under @p lock: the threads of a pass share it).
+     */
+    struct BondBreaking
+    {
+      double                 stretch;
+      std::vector<SlotBond> *bonds;
+      std::mutex            *lock;
+    };
+
+    /**
+     * Sum of x e V v over the intact bonds of every slot; with @p breaking (Breaks) the
+     * bonds that it breaks are left out. A bond breaks on the comparison
+     * BreakableBonds::break_above_stretch() makes, with the extension in the same
+     * operations, so the two break the same bonds.
+     */
+    template <int dim, bool breaks>
     inline __attribute__((always_inline)) void
     moment_pass_impl(const StencilLayout<dim>                                    &layout,
                      const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
                      const double                                                *u,
                      double                                                      *moment,
+                     const BondBreaking                                          &breaking,
                      const RunRange                                              &range)
     {
       const std::size_t n_slots = layout.n_slots();
@@ -210,13 +231,21 @@ namespace PeriArlequin
           component_pointers<dim>(u, n_slots, b.first, ui);
           component_pointers<dim>(u, n_slots, b.first + b.delta, uj);
           const int n               = b.n;
-          double *__restrict values = chunk, *__restrict intact = chunk + chunk_length;
+          double *__restrict values = chunk, *__restrict intact = chunk + chunk_length,
+                             *__restrict broke = chunk + 2 * chunk_length;
           unpack_mask(mask, n, intact);
+          const double limit = breaks ? breaking.stretch * b.length : 0.;
+          // The term of bond q, and 1 in broke[q] if it breaks here (else 0).
           const auto term = [&](const int q) __attribute__((always_inline))
           {
             double       numerator;
             const double l = deformed_length<dim>(b.xi, ui, uj, q, numerator);
             const double e = numerator / (l + b.length);
+            if constexpr (breaks)
+              {
+                broke[q] = intact[q] == double(BondFamilies<dim>::intact) && e > limit ? 1. : 0.;
+                return intact[q] != 0. && broke[q] == 0. ? b.length * e * b.volume : 0.;
+              }
             return intact[q] != 0. ? b.length * e * b.volume : 0.;
           };
           double *moment_i = moment + b.first, *moment_j = moment_i + b.delta;
@@ -229,12 +258,28 @@ namespace PeriArlequin
                   moment_i[q] += m;
                   moment_j[q] += m;
                 }
-              return;
             }
-#pragma omp      simd
-          for (int q = 0; q < n; ++q)
-            values[q] = term(q);
-          add_to_ends(moment_i, moment_j, values, 1., n);
+          else
+            {
+#pragma omp simd
+              for (int q = 0; q < n; ++q)
+                values[q] = term(q);
+              add_to_ends(moment_i, moment_j, values, 1., n);
+            }
+          if constexpr (breaks)
+            {
+              double n_broke = 0;
+#pragma omp simd reduction(+ : n_broke)
+              for (int q = 0; q < n; ++q)
+                n_broke += broke[q];
+              if (n_broke > 0)
+                {
+                  std::lock_guard<std::mutex> guard(*breaking.lock);
+                  for (int q = 0; q < n; ++q)
+                    if (broke[q] != 0.)
+                      breaking.bonds->push_back({b.first + q, b.half});
+                }
+            }
         });
     }
 
@@ -368,7 +413,17 @@ namespace PeriArlequin
     double                                                      *moment,              \
     const RunRange                                              &range)               \
   {                                                                                   \
-    moment_pass_impl<dim>(layout, stencil, u, moment, range);                         \
+    moment_pass_impl<dim, false>(layout, stencil, u, moment, {}, range);              \
+  }                                                                                   \
+  PERIARLEQUIN_KERNEL_CLONES void breaking_moment_pass(                               \
+    const StencilLayout<dim>                                    &layout,              \
+    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,             \
+    const double                                                *u,                   \
+    double                                                      *moment,              \
+    const BondBreaking                                          &breaking,            \
+    const RunRange                                              &range)               \
+  {                                                                                   \
+    moment_pass_impl<dim, true>(layout, stencil, u, moment, breaking, range);         \
   }                                                                                   \
   PERIARLEQUIN_KERNEL_CLONES void force_pass(                                         \
     const StencilLayout<dim>                                    &layout,              \
@@ -431,10 +486,37 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(
-    const BondFamilies<dim>        &bonds,
-    ArrayView<const Tensor<1, dim>> u,
-    std::vector<double>            &scalars) const
+  LinearPeridynamicSolid<dim>::compute_moments_on_stencil(const BondFamilies<dim>        &bonds,
+                                                          ArrayView<const Tensor<1, dim>> u,
+                                                          const double           critical_stretch,
+                                                          std::vector<SlotBond> *breaking) const
+  {
+    const auto       &layout  = bonds.stencil_layout();
+    const std::size_t n_slots = layout.n_slots();
+    gather_displacements(layout, u);
+    fill_zeros(box_moment, n_slots);
+    if (breaking == nullptr)
+      for_each_slab(layout, [&](const RunRange &range) {
+        moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), range);
+      });
+    else
+      {
+        std::mutex lock;
+        for_each_slab(layout, [&](const RunRange &range) {
+          breaking_moment_pass(layout,
+                               bonds.stencil,
+                               box_displacement.data(),
+                               box_moment.data(),
+                               BondBreaking{critical_stretch, breaking, &lock},
+                               range);
+        });
+      }
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::scalars_from_moments_on_stencil(const BondFamilies<dim> &bonds,
+                                                               std::vector<double> &scalars) const
   {
     const auto       &layout  = bonds.stencil_layout();
     const std::size_t n_slots = layout.n_slots();
@@ -446,11 +528,6 @@ namespace PeriArlequin
         });
         box_volume_version = layout.mask_version();
       }
-    gather_displacements(layout, u);
-    fill_zeros(box_moment, n_slots);
-    for_each_slab(layout, [&](const RunRange &range) {
-      moment_pass(layout, bonds.stencil, box_displacement.data(), box_moment.data(), range);
-    });
     for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
@@ -510,9 +587,13 @@ namespace PeriArlequin
   template void LinearPeridynamicSolid<dim>::gather_displacements(const StencilLayout<dim> &,      \
                                                                   ArrayView<const Tensor<1, dim>>) \
     const;                                                                                         \
-  template void LinearPeridynamicSolid<dim>::compute_particle_scalars_on_stencil(                  \
+  template void LinearPeridynamicSolid<dim>::compute_moments_on_stencil(                           \
     const BondFamilies<dim> &,                                                                     \
     ArrayView<const Tensor<1, dim>>,                                                               \
+    const double,                                                                                  \
+    std::vector<SlotBond> *) const;                                                                \
+  template void LinearPeridynamicSolid<dim>::scalars_from_moments_on_stencil(                      \
+    const BondFamilies<dim> &,                                                                     \
     std::vector<double> &) const;                                                                  \
   template void LinearPeridynamicSolid<dim>::compute_forces_on_stencil(                            \
     const BondFamilies<dim> &,                                                                     \

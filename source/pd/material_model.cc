@@ -1,4 +1,5 @@
 #include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/pd/breakable_bonds.h>
 #include <periarlequin/pd/material_model.h>
 
 #include <deal.II/base/exceptions.h>
@@ -77,7 +78,11 @@ namespace PeriArlequin
                                                         std::vector<double> &scalars) const
   {
     if (bonds.uses_stencil())
-      return compute_particle_scalars_on_stencil(bonds, u, scalars);
+      {
+        compute_moments_on_stencil(bonds, u, 0., nullptr);
+        scalars_from_moments_on_stencil(bonds, scalars);
+        return;
+      }
     // Per owned particle: the extension moment sum x e V v and the intact weighted volume
     // sum x^2 V v, gathered bond by bond into both owned ends.
     moments.assign(2 * bonds.n_owned, 0.);
@@ -105,6 +110,40 @@ namespace PeriArlequin
         scalars[2 * i]     = theta;
         scalars[2 * i + 1] = moments[2 * i] - theta * moments[2 * i + 1] / 3.;
       }
+  }
+
+  template <int dim>
+  std::vector<StoredBond>
+  PDMaterialModel<dim>::compute_particle_scalars_breaking(BondFamilies<dim>              &bonds,
+                                                          ArrayView<const Tensor<1, dim>> u,
+                                                          const double         critical_stretch,
+                                                          std::vector<double> &scalars) const
+  {
+    BreakableBonds<dim> breakable(bonds, u);
+    breakable.break_above_stretch(critical_stretch);
+    if (breakable.n_broken() > 0)
+      bonds.bonds_broke(breakable.broken_bonds());
+    compute_particle_scalars(bonds, u, scalars);
+    return breakable.broken_bonds();
+  }
+
+  template <int dim>
+  std::vector<StoredBond>
+  LinearPeridynamicSolid<dim>::compute_particle_scalars_breaking(BondFamilies<dim> &bonds,
+                                                                 ArrayView<const Tensor<1, dim>> u,
+                                                                 const double critical_stretch,
+                                                                 std::vector<double> &scalars) const
+  {
+    if (!bonds.uses_stencil())
+      return PDMaterialModel<dim>::compute_particle_scalars_breaking(bonds,
+                                                                     u,
+                                                                     critical_stretch,
+                                                                     scalars);
+    std::vector<SlotBond> breaking;
+    compute_moments_on_stencil(bonds, u, critical_stretch, &breaking);
+    std::vector<StoredBond> broken = bonds.break_stencil_bonds(breaking);
+    scalars_from_moments_on_stencil(bonds, scalars);
+    return broken;
   }
 
   template <int dim>

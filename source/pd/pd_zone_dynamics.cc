@@ -22,6 +22,13 @@ namespace PeriArlequin
   PDZone<dim>::update_model_scalars()
   {
     model->compute_particle_scalars(bonds, state.displacements(), model_scalars);
+    share_model_scalars();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::share_model_scalars()
+  {
     if (model->n_particle_scalars() > 0)
       ghosts.update_ghosts(make_array_view(model_scalars), model->n_particle_scalars());
   }
@@ -102,25 +109,36 @@ namespace PeriArlequin
   PDZone<dim>::compute_forces(const double time)
   {
     update_ghost_displacements();
-    // A criterion that reads the scalars gets them for these displacements; they stay
-    // current for the forces unless a bond broke on some rank (a ghost's scalars change with
-    // bonds its own rank breaks).
+    // A critical stretch is tested where the model forms the extensions for its scalars,
+    // which then see the broken bonds; a criterion that reads the scalars gets them for these
+    // displacements, and they stay current for the forces unless a bond broke on some rank
+    // (a ghost's scalars change with bonds its own rank breaks).
     bool scalars_current = false;
     if (fracture)
       {
-        if (fracture->needs_particle_scalars())
-          update_model_scalars();
-        BreakableBonds<dim> breakable(bonds, state.displacements());
+        std::vector<StoredBond> broken;
         if (fracture->critical_stretch() > 0)
-          breakable.break_above_stretch(fracture->critical_stretch());
+          {
+            broken = model->compute_particle_scalars_breaking(bonds,
+                                                              state.displacements(),
+                                                              fracture->critical_stretch(),
+                                                              model_scalars);
+            share_model_scalars();
+            scalars_current = true;
+          }
         else
-          fracture->break_bonds(breakable, make_array_view(model_scalars));
-        new_breaks       = breakable.particles_with_broken_bonds();
-        const bool broke = breakable.n_broken() > 0;
-        if (broke)
-          bonds.bonds_broke(breakable.broken_bonds());
-        scalars_current =
-          fracture->needs_particle_scalars() && !Utilities::MPI::logical_or(broke, communicator);
+          {
+            if (fracture->needs_particle_scalars())
+              update_model_scalars();
+            BreakableBonds<dim> breakable(bonds, state.displacements());
+            fracture->break_bonds(breakable, make_array_view(model_scalars));
+            broken = breakable.broken_bonds();
+            if (!broken.empty())
+              bonds.bonds_broke(broken);
+            scalars_current = fracture->needs_particle_scalars() &&
+                              !Utilities::MPI::logical_or(!broken.empty(), communicator);
+          }
+        new_breaks = particles_storing(broken);
       }
     if (checks_overlap)
       check_damage_near_overlap(time);

@@ -168,8 +168,7 @@ namespace PeriArlequin
     std::fill(mask.begin(), mask.end(), 0);
     for (unsigned int i = 0; i < bonds.n_owned; ++i)
       for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        mask[mask_entry(i, bonds.stencil_index[n]).second] =
-          bonds.state[n] != BondFamilies<dim>::broken;
+        mask[mask_entry(i, bonds.stencil_index[n]).second] = bonds.state[n];
     for (unsigned int r = 0; r < runs.size(); ++r)
       for (std::size_t h = 0; h < half_offsets.size(); ++h)
         trim_block(r, h);

@@ -135,6 +135,13 @@ namespace PeriArlequin
     void
     bonds_broke(const std::vector<StoredBond> &broken);
 
+    /**
+     * Break the intact bonds @p breaking of the stencil layout (found broken in a pass over
+     * it) and refresh the layout: returns them as stored, in storage order.
+     */
+    std::vector<StoredBond>
+    break_stencil_bonds(const std::vector<SlotBond> &breaking);
+
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
     std::set<IdPair>
     broken_bonds(ArrayView<const types::particle_index> ids) const;

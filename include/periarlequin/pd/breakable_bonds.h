@@ -14,6 +14,20 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
+   * The owned particles that store the bonds @p broken, in their order (consecutive repeats
+   * merged).
+   */
+  inline std::vector<unsigned int>
+  particles_storing(const std::vector<StoredBond> &broken)
+  {
+    std::vector<unsigned int> particles;
+    for (const StoredBond &bond : broken)
+      if (particles.empty() || particles.back() != bond.particle)
+        particles.push_back(bond.particle);
+    return particles;
+  }
+
+  /**
    * The bonds as a fracture criterion sees them in one step: the intact bonds stored for
    * the owned particles (unbreakable ones left out), each with its extension under the
    * current displacements, and a way to break one. The PD zone refreshes its views of the
@@ -106,20 +120,6 @@ namespace PeriArlequin
     broken_bonds() const
     {
       return broken_here;
-    }
-
-    /**
-     * The owned particles that stored a bond broken through this view, in the order of the
-     * breaks (consecutive repeats merged).
-     */
-    std::vector<unsigned int>
-    particles_with_broken_bonds() const
-    {
-      std::vector<unsigned int> particles;
-      for (const StoredBond &bond : broken_here)
-        if (particles.empty() || particles.back() != bond.particle)
-          particles.push_back(bond.particle);
-      return particles;
     }
 
     /** The bond families, read only (for models that split the energy into bonds). */

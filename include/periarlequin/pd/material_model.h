@@ -65,6 +65,20 @@ namespace PeriArlequin
                              std::vector<double>            &scalars) const = 0;
 
     /**
+     * compute_particle_scalars() after breaking every intact, breakable bond whose stretch
+     * e / |xi| exceeds @p critical_stretch (the critical-stretch fracture criterion): the
+     * scalars see those bonds broken. Returns the bonds broken, in storage order, with their
+     * states set and the stencil view refreshed (BondFamilies::bonds_broke()). The default
+     * breaks them in a loop of its own (BreakableBonds::break_above_stretch()) first; a
+     * model that forms the extensions for its scalars anyway can break them there.
+     */
+    virtual std::vector<StoredBond>
+    compute_particle_scalars_breaking(BondFamilies<dim>              &bonds,
+                                      ArrayView<const Tensor<1, dim>> displacement,
+                                      const double                    critical_stretch,
+                                      std::vector<double>            &scalars) const;
+
+    /**
      * Force density [N/m^3] and strain-energy density [J/m^3] of every owned particle, from
      * the displacements and scalars of owned and ghost particles. The energy of particle K
      * enters the Hamiltonian with the weight @p state_weight[K] (owned and ghost; 1 - alpha_K
@@ -140,6 +154,12 @@ namespace PeriArlequin
     compute_particle_scalars(const BondFamilies<dim>        &bonds,
                              ArrayView<const Tensor<1, dim>> displacement,
                              std::vector<double>            &scalars) const override;
+    /** On the stencil layout, the bonds break in the vectorised dilatation pass. */
+    std::vector<StoredBond>
+    compute_particle_scalars_breaking(BondFamilies<dim>              &bonds,
+                                      ArrayView<const Tensor<1, dim>> displacement,
+                                      const double                    critical_stretch,
+                                      std::vector<double>            &scalars) const override;
     void
     compute_forces(const BondFamilies<dim>        &bonds,
                    ArrayView<const Tensor<1, dim>> displacement,
@@ -170,11 +190,21 @@ namespace PeriArlequin
                          ArrayView<const double>    scalars,
                          const std::vector<double> &state_weight) const;
 
-    /** compute_particle_scalars() on the stencil layout of @p bonds. */
+    /**
+     * The extension moments sum x e V v of every slot of the stencil layout of @p bonds
+     * (box_moment); with @p breaking, the intact, breakable bonds whose stretch exceeds
+     * @p critical_stretch are left out and listed there (the dilatation pass of
+     * compute_particle_scalars_breaking()).
+     */
     void
-    compute_particle_scalars_on_stencil(const BondFamilies<dim>        &bonds,
-                                        ArrayView<const Tensor<1, dim>> displacement,
-                                        std::vector<double>            &scalars) const;
+    compute_moments_on_stencil(const BondFamilies<dim>        &bonds,
+                               ArrayView<const Tensor<1, dim>> displacement,
+                               const double                    critical_stretch,
+                               std::vector<SlotBond>          *breaking) const;
+    /** The scalars of the owned particles from box_moment and the bonds' current states. */
+    void
+    scalars_from_moments_on_stencil(const BondFamilies<dim> &bonds,
+                                    std::vector<double>     &scalars) const;
     /** compute_forces() on the stencil layout of @p bonds. */
     void
     compute_forces_on_stencil(const BondFamilies<dim>        &bonds,

@@ -513,6 +513,9 @@ namespace PeriArlequin
     /** Model scalars (owned, then ghosts) of the current displacements. */
     void
     update_model_scalars();
+    /** Copy the owned particles' model scalars to the ghosts. */
+    void
+    share_model_scalars();
     /**
      * Model scalars (unless @p scalars_current: computed for these displacements and bond
      * states already) and forces of the current displacements.

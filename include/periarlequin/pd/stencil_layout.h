@@ -27,6 +27,16 @@ namespace PeriArlequin
   };
 
   /**
+   * A bond as the stencil layout sees it: the slot of its end with the lower slot and its
+   * half offset (StencilLayout::half_offsets).
+   */
+  struct SlotBond
+  {
+    std::size_t  slot;
+    unsigned int half_offset;
+  };
+
+  /**
    * The bonds of one rank as a lattice stencil: the particles it holds (owned and ghosts)
    * placed in a box of lattice sites (x fastest, padded by the stencil's reach on every side),
    * so that the neighbour at stencil offset o of the site in slot s is in slot s + delta(o)
@@ -35,8 +45,9 @@ namespace PeriArlequin
    * streams contiguous arrays and vectorises.
    *
    * A run is the held slots of one lattice line (from its first to its last held site); the
-   * bond state is one byte per (slot of a run, half offset), 1 for a bond that is intact (or
-   * unbreakable) with at least one owned end, 0 otherwise: broken, pre-cut, to a site not held
+   * bond state is one byte per (slot of a run, half offset): for a bond with at least one
+   * owned end its state in the CSR arrays (BondFamilies::BondState: 1 intact, 2 unbreakable),
+   * 0 otherwise: broken, pre-cut, to a site not held
    * (outside the PD zone, a hole), or between two ghosts. The BondFamilies' CSR arrays stay
    * the description of the bonds; this is a view of them, refreshed by update_mask() after
    * their states change.
@@ -99,6 +110,14 @@ namespace PeriArlequin
     neighbor(const unsigned int i, const unsigned int k) const
     {
       return local_of_slot[slot[i] + entry_shift[k]];
+    }
+
+    /** The local indices of the ends of @p bond, the lower slot's first. */
+    std::pair<unsigned int, unsigned int>
+    ends(const SlotBond &bond) const
+    {
+      return {local_of_slot[bond.slot],
+              local_of_slot[bond.slot + half_offsets[bond.half_offset].delta]};
     }
 
     /** Slots in the padded box. */
