@@ -16,7 +16,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 loop_time() { # build prm -> wall time of the time loop [s]
-  (cd "$work" && "$1/periarlequin" "$2") | awk '/^Time loop/ {for (i = 1; i <= NF; ++i) if ($i == "in") print $(i+1)}'
+  # Each build's own library, also for a program copied out of its build directory.
+  (cd "$work" && LD_LIBRARY_PATH="$1${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$1/periarlequin" "$2") | awk '/^Time loop/ {for (i = 1; i <= NF; ++i) if ($i == "in") print $(i+1)}'
 }
 
 printf "%-32s %10s %10s %8s %10s %10s %8s\n" case "A median" "B median" "B / A" "A min" "B min" "B / A"

@@ -53,9 +53,10 @@ namespace PeriArlequin
     needs_particle_scalars() const;
 
     /**
-     * A criterion that is a critical stretch s_c returns it (> 0): the PD zone then breaks
-     * the intact bonds whose stretch e / |xi| exceeds it in its own pass over the bonds, and
-     * break_bonds() is not called. 0 (the default): break_bonds() decides. The run's summary
+     * A criterion that is a critical stretch s_c returns it (> 0): the material model then
+     * breaks the intact bonds whose stretch e / |xi| exceeds it where it forms the
+     * extensions (PDMaterialModel::compute_particle_scalars_breaking()), and break_bonds()
+     * is not called. 0 (the default): break_bonds() decides. The run's summary
      * prints it.
      */
     virtual double
