@@ -515,6 +515,31 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  LinearPeridynamicSolid<dim>::update_intact_volumes(const BondFamilies<dim>     &bonds,
+                                                     const std::vector<SlotBond> &broken,
+                                                     const unsigned int version_before) const
+  {
+    const auto &layout = bonds.stencil_layout();
+    if (box_volume_version != version_before || box_volume.size() != layout.n_slots())
+      return;
+    const auto resum = [&](const std::size_t s) {
+      double volume = 0.;
+      layout.for_each_bond_in_pass_order(s, [&](const unsigned int h) {
+        const auto &bond = bonds.stencil[layout.half_offsets[h].stencil_index];
+        volume += bond.length * bond.length * bond.volume;
+      });
+      box_volume[s] = volume;
+    };
+    for (const SlotBond &bond : broken)
+      {
+        resum(bond.slot);
+        resum(bond.slot + layout.half_offsets[bond.half_offset].delta);
+      }
+    box_volume_version = layout.mask_version();
+  }
+
+  template <int dim>
+  void
   LinearPeridynamicSolid<dim>::scalars_from_moments_on_stencil(const BondFamilies<dim> &bonds,
                                                                std::vector<double> &scalars) const
   {
@@ -592,6 +617,9 @@ namespace PeriArlequin
     ArrayView<const Tensor<1, dim>>,                                                               \
     const double,                                                                                  \
     std::vector<SlotBond> *) const;                                                                \
+  template void LinearPeridynamicSolid<dim>::update_intact_volumes(const BondFamilies<dim> &,      \
+                                                                   const std::vector<SlotBond> &,  \
+                                                                   const unsigned int) const;      \
   template void LinearPeridynamicSolid<dim>::scalars_from_moments_on_stencil(                      \
     const BondFamilies<dim> &,                                                                     \
     std::vector<double> &) const;                                                                  \

@@ -139,9 +139,12 @@ namespace PeriArlequin
                                                                      u,
                                                                      critical_stretch,
                                                                      scalars);
+    const unsigned int    version_before = bonds.stencil_layout().mask_version();
     std::vector<SlotBond> breaking;
     compute_moments_on_stencil(bonds, u, critical_stretch, &breaking);
     std::vector<StoredBond> broken = bonds.break_stencil_bonds(breaking);
+    if (!broken.empty())
+      update_intact_volumes(bonds, breaking, version_before);
     scalars_from_moments_on_stencil(bonds, scalars);
     return broken;
   }

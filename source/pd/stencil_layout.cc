@@ -117,11 +117,13 @@ namespace PeriArlequin
     for (auto &ranges : slabs)
       ranges.clear();
     long previous_slab = -1;
+    run_phase.resize(runs.size());
     for (unsigned int r = 0; r < runs.size(); ++r)
       {
         const long coordinate = static_cast<long>(runs[r].begin / stride[dim - 1]) + lower[dim - 1];
         const long slab       = coordinate / thickness;
         auto      &ranges     = slabs[slab % 2];
+        run_phase[r]          = slab % 2;
         if (slab != previous_slab)
           ranges.emplace_back(r, r + 1);
         else

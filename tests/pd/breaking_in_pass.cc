@@ -90,8 +90,9 @@ namespace
   double
   breaking_stretch(const std::string &block)
   {
-    auto simulator = make_simulator<dim>(block + criterion("critical stretch") +
-                                         "subsection Peridynamics\n  set Critical stretch = 1\nend\n");
+    auto simulator =
+      make_simulator<dim>(block + criterion("critical stretch") +
+                          "subsection Peridynamics\n  set Critical stretch = 1\nend\n");
     simulator->setup();
     const auto         &pd    = *simulator->get_pd_zone();
     BondFamilies<dim>   bonds = pd.get_bonds();
@@ -108,8 +109,7 @@ namespace
   compare_one_evaluation(const std::string &title, const std::string &block)
   {
     const std::string breaking = "subsection Peridynamics\n  set Critical stretch = " +
-                                  Utilities::to_string(breaking_stretch<dim>(block)) +
-                                  "\nend\n";
+                                 Utilities::to_string(breaking_stretch<dim>(block)) + "\nend\n";
     auto in_pass = make_simulator<dim>(block + criterion("critical stretch") + breaking);
     auto in_loop = make_simulator<dim>(block + criterion("stretch in a loop") + breaking);
     in_pass->setup();
@@ -163,9 +163,8 @@ main(int argc, char **argv)
 
       const std::string plate   = plate_parameters(8e-4, true, 300);
       auto              in_pass = make_simulator<2>(plate + criterion("critical stretch"));
-      auto              in_pass_one_thread =
-        make_simulator<2>(plate + criterion("critical stretch"));
-      auto in_loop = make_simulator<2>(plate + criterion("stretch in a loop"));
+      auto in_pass_one_thread   = make_simulator<2>(plate + criterion("critical stretch"));
+      auto in_loop              = make_simulator<2>(plate + criterion("stretch in a loop"));
       in_pass->run();
       tbb::task_arena(1).execute([&] { in_pass_one_thread->run(); });
       in_loop->run();

@@ -201,6 +201,15 @@ namespace PeriArlequin
                                ArrayView<const Tensor<1, dim>> displacement,
                                const double                    critical_stretch,
                                std::vector<SlotBond>          *breaking) const;
+    /**
+     * After the bonds @p broken broke: the intact weighted volumes of their ends' slots
+     * summed again (in the passes' order, so with the bits of a full pass), if box_volume
+     * was that of the mask version @p version_before; else the next scalars sum them all.
+     */
+    void
+    update_intact_volumes(const BondFamilies<dim>     &bonds,
+                          const std::vector<SlotBond> &broken,
+                          const unsigned int           version_before) const;
     /** The scalars of the owned particles from box_moment and the bonds' current states. */
     void
     scalars_from_moments_on_stencil(const BondFamilies<dim> &bonds,

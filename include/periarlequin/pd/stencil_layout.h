@@ -6,6 +6,7 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/types.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -120,6 +121,17 @@ namespace PeriArlequin
               local_of_slot[bond.slot + half_offsets[bond.half_offset].delta]};
     }
 
+    /**
+     * Call @p visit(h) for every bond of state non-zero with an end in the held slot @p s,
+     * h its half offset, in the order in which the passes add the bonds' terms to the slot
+     * (the slabs' phases, the runs, the half offsets, a slot's term as the upper end before
+     * its term as the lower end): a sum in this order has the bits of a pass's sum, so a
+     * slot's sum can be formed again alone after bonds broke.
+     */
+    template <typename Visitor>
+    void
+    for_each_bond_in_pass_order(const std::size_t s, const Visitor &visit) const;
+
     /** Slots in the padded box. */
     std::size_t
     n_slots() const
@@ -186,9 +198,39 @@ namespace PeriArlequin
     std::size_t               n_box_slots = 0;
     /** The run of each lattice line of the box (by slot / stride[1]), or -1. */
     std::vector<int> run_of_line;
-    unsigned int     n_held  = 0;
-    unsigned int     version = 0;
+    /** The phase (0: even slabs, 1: odd) in which the passes visit each run. */
+    std::vector<std::uint8_t> run_phase;
+    unsigned int              n_held  = 0;
+    unsigned int              version = 0;
   };
+  template <int dim>
+  template <typename Visitor>
+  void
+  StencilLayout<dim>::for_each_bond_in_pass_order(const std::size_t s, const Visitor &visit) const
+  {
+    // (phase, run, half offset, 0 for the upper end and 1 for the lower) of each bond.
+    std::vector<std::array<std::size_t, 4>> terms;
+    terms.reserve(2 * half_offsets.size());
+    const std::size_t line_length = stride[1];
+    const auto        add_term =
+      [&](const std::size_t lower_slot, const unsigned int h, const std::size_t end) {
+        const int r = run_of_line[lower_slot / line_length];
+        if (r < 0 || lower_slot < runs[r].begin || lower_slot >= runs[r].begin + runs[r].length)
+          return;
+        if (mask[runs[r].mask_begin + h * std::size_t(runs[r].length) +
+                 (lower_slot - runs[r].begin)] != 0)
+          terms.push_back({run_phase[r], std::size_t(r), h, end});
+      };
+    for (unsigned int h = 0; h < half_offsets.size(); ++h)
+      {
+        add_term(s, h, 1);
+        if (s >= half_offsets[h].delta)
+          add_term(s - half_offsets[h].delta, h, 0);
+      }
+    std::sort(terms.begin(), terms.end());
+    for (const auto &term : terms)
+      visit(static_cast<unsigned int>(term[2]));
+  }
 } // namespace PeriArlequin
 
 #endif
