@@ -56,21 +56,24 @@ namespace PeriArlequin
 
     /**
      * Visit the blocks of the runs @p range of @p layout chunk by chunk: @p visit(block) for
-     * each run, half offset and chunk of the block's slots (StencilLayout::block_slots), in
-     * this order: the slots outside them would add zeros.
+     * each run, half offset and chunk of the block's slots (StencilLayout::block_slots, or
+     * force_block_slots for the @p force_pass), in this order: the slots outside them would
+     * add zeros, or terms nobody reads.
      */
     template <int dim, typename Visitor>
     inline __attribute__((always_inline)) void
     for_each_block(const StencilLayout<dim>                                    &layout,
                    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
                    const RunRange                                              &range,
-                   const Visitor                                               &visit)
+                   const Visitor                                               &visit,
+                   const bool                                                   force_pass = false)
     {
-      Block<dim> block;
+      const auto &bounds = force_pass ? layout.force_block_slots : layout.block_slots;
+      Block<dim>  block;
       for (unsigned int r = range.first; r < range.end; ++r)
         for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
           {
-            const auto [begin, end] = layout.block_slots[r * layout.half_offsets.size() + h];
+            const auto [begin, end] = bounds[r * layout.half_offsets.size() + h];
             if (begin == end)
               continue;
             const auto &run  = layout.runs[r];
@@ -393,7 +396,8 @@ namespace PeriArlequin
 #pragma omp simd
           for (int q = 0; q < n; ++q)
             deviatoric_i[q] += values_i[q];
-        });
+        },
+        true);
     }
 
     // One instance per dimension and instruction set.

@@ -177,6 +177,7 @@ namespace PeriArlequin
                 broken,
                 force_kernel(parameters.force_kernel, *model),
                 previous ? &*previous : nullptr);
+    restrict_force_pass();
     find_bonds_near_overlap();
     model->initialize(material, bonds);
     new_breaks.clear();
@@ -191,6 +192,27 @@ namespace PeriArlequin
     find_boundary_layers();
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator) || !settling_force.empty();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::restrict_force_pass()
+  {
+    // A particle of force weight 0 (a slave where alpha = 1, force blending) moves with the
+    // FE field and passes no force on: its force is not computed. A bond whose ends both have
+    // state weight 0 (energy blending, alpha = 1) carries no force.
+    const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
+    std::vector<bool>  force_used(n_total, false), state_used(n_total);
+    unforced.clear();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        force_used[i] = force_weight[i] != 0.;
+        if (!force_used[i])
+          unforced.push_back(i);
+      }
+    for (unsigned int i = 0; i < n_total; ++i)
+      state_used[i] = state_weight[i] != 0.;
+    bonds.restrict_force_pass(force_used, state_used);
   }
 
   template <int dim>

@@ -45,6 +45,11 @@ namespace PeriArlequin
                           state_weight,
                           force_density,
                           energy_density);
+    for (const unsigned int i : unforced)
+      {
+        force_density[i]  = Tensor<1, dim>();
+        energy_density[i] = 0.;
+      }
   }
 
   template <int dim>

@@ -111,6 +111,8 @@ namespace PeriArlequin
         }
     mask.assign(mask_size, 0);
     block_slots.assign(runs.size() * half_offsets.size(), {0, 0});
+    force_block_slots = block_slots;
+    force_use.clear();
 
     // Slabs of the outermost coordinate, counted from the lattice's origin.
     const unsigned int thickness = std::max(reach, 1);
@@ -148,19 +150,39 @@ namespace PeriArlequin
   void
   StencilLayout<dim>::trim_block(const unsigned int r, const std::size_t h)
   {
-    const auto first  = mask.begin() + runs[r].mask_begin + h * runs[r].length;
-    const auto end    = first + runs[r].length;
-    const auto intact = [](const std::uint8_t m) { return m != 0; };
-    const auto begin  = std::find_if(first, end, intact);
-    if (begin == end)
-      {
-        block_slots[r * half_offsets.size() + h] = {0, 0};
-        return;
-      }
-    const auto last =
-      std::find_if(std::make_reverse_iterator(end), std::make_reverse_iterator(begin), intact);
-    block_slots[r * half_offsets.size() + h] = {static_cast<unsigned int>(begin - first),
-                                                static_cast<unsigned int>(last.base() - first)};
+    const std::size_t   block  = r * half_offsets.size() + h;
+    const std::uint8_t *states = mask.data() + runs[r].mask_begin + h * runs[r].length;
+    const std::size_t   first = runs[r].begin, delta = half_offsets[h].delta;
+    // [first, end) of the slots q of the run for which @p counts(q) holds, or {0, 0}.
+    const auto bounds = [&](const auto &counts) -> std::pair<unsigned int, unsigned int> {
+      unsigned int begin = 0, end = runs[r].length;
+      while (begin < end && !counts(begin))
+        ++begin;
+      while (end > begin && !counts(end - 1))
+        --end;
+      return begin < end ? std::make_pair(begin, end) : std::make_pair(0u, 0u);
+    };
+    block_slots[block] = bounds([&](const unsigned int q) { return states[q] != 0; });
+    if (force_use.empty())
+      force_block_slots[block] = block_slots[block];
+    else
+      force_block_slots[block] = bounds([&](const unsigned int q) {
+        const std::uint8_t lower = force_use[first + q], upper = force_use[first + q + delta];
+        return states[q] != 0 && ((lower | upper) & 1) && ((lower | upper) & 2);
+      });
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::restrict_force_pass(const std::vector<bool> &force_used,
+                                          const std::vector<bool> &state_used)
+  {
+    force_use.assign(n_box_slots, 0);
+    for (unsigned int i = 0; i < slot.size(); ++i)
+      force_use[slot[i]] = (force_used[i] ? 1 : 0) | (state_used[i] ? 2 : 0);
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      for (std::size_t h = 0; h < half_offsets.size(); ++h)
+        trim_block(r, h);
   }
 
   template <int dim>

@@ -232,6 +232,17 @@ namespace PeriArlequin
                 "lattice stencil on some ranks, bond lists on others" :
                 "bond lists")
           << std::endl;
+    {
+      // Slaves whose force is not used (force weight 0) are skipped by the force pass.
+      const auto [all, forced]    = uses_stencil ?
+                                      pd_zone->get_bonds().stencil_layout().visited_slots() :
+                                      std::pair<std::size_t, std::size_t>(0, 0);
+      const double visited_all    = Utilities::MPI::sum(double(all), communicator),
+                   visited_forced = Utilities::MPI::sum(double(forced), communicator);
+      if (visited_forced < visited_all)
+        pcout << "  PD force pass: " << 100. * (1. - visited_forced / visited_all)
+              << " % of the bond slots skipped (their pair forces are not used)" << std::endl;
+    }
     if (pd_parameters.fracture)
       {
         pcout << "  fracture criterion: " << pd_parameters.fracture_criterion;

@@ -127,6 +127,17 @@ namespace PeriArlequin
     {
       return layout;
     }
+    /**
+     * Under the stencil, let the force pass skip the bonds whose pair force is not used
+     * (StencilLayout::restrict_force_pass(); flags per owned and ghost particle).
+     */
+    void
+    restrict_force_pass(const std::vector<bool> &force_used, const std::vector<bool> &state_used)
+    {
+      if (stencil_active)
+        layout.restrict_force_pass(force_used, state_used);
+    }
+
     /** After entries of state changed: refresh the stencil view. */
     void
     states_changed();

@@ -286,10 +286,17 @@ namespace PeriArlequin
     /** The time over which a settling force fades out [s]; 0 ends every settling. */
     void
     set_settling_time(const double duration);
-    /** Internal force density of the owned particles at the last force evaluation [N/m^dim]. */
+    /**
+     * Internal force density of the owned particles at the last force evaluation [N/m^dim];
+     * 0 on particles of force weight 0 (slaves where alpha = 1 under force blending: their
+     * force is not used, so not computed).
+     */
     ArrayView<const Tensor<1, dim>>
     force_densities() const;
-    /** Strain energy density of the owned particles (blended if energy blending) [J/m^dim]. */
+    /**
+     * Strain energy density of the owned particles (blended if energy blending) [J/m^dim]; 0
+     * where the force density is not computed.
+     */
     ArrayView<const double>
     energy_densities() const;
     /**
@@ -513,6 +520,12 @@ namespace PeriArlequin
     /** Model scalars (owned, then ghosts) of the current displacements. */
     void
     update_model_scalars();
+    /**
+     * Tell the bonds which pair forces are used, and list the owned particles whose force is
+     * not (unforced), after the bonds were built.
+     */
+    void
+    restrict_force_pass();
     /** Copy the owned particles' model scalars to the ghosts. */
     void
     share_model_scalars();
@@ -579,6 +592,11 @@ namespace PeriArlequin
     /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
+    /**
+     * Owned particles of force weight 0: their force and energy densities are not computed
+     * (the force pass skips their bonds where no other end needs them) and are set to 0.
+     */
+    std::vector<unsigned int> unforced;
     /** See particles_with_new_breaks(). */
     std::vector<unsigned int> new_breaks;
     /** Handle of the particle state attached to the cells during a repartition. */

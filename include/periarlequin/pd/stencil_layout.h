@@ -91,6 +91,16 @@ namespace PeriArlequin
           ArrayView<const types::particle_index> ids,
           const BondFamilies<dim>               &bonds);
 
+    /**
+     * Let the force pass skip the bonds whose pair force is not used: those with no end in
+     * @p force_used (per held particle, local index: its force density is used, an owned
+     * particle of non-zero force weight) and those with no end in @p state_used (its force
+     * state enters the pair forces, a non-zero state weight). Their terms are zero or go to
+     * forces nobody reads. Holds until the next place().
+     */
+    void
+    restrict_force_pass(const std::vector<bool> &force_used, const std::vector<bool> &state_used);
+
     /** The bond states from the CSR states of @p bonds (after they were built or bonds broke). */
     void
     update_mask(const BondFamilies<dim> &bonds);
@@ -132,6 +142,22 @@ namespace PeriArlequin
     void
     for_each_bond_in_pass_order(const std::size_t s, const Visitor &visit) const;
 
+    /**
+     * Slots the dilatation pass and the force pass visit (sums of the lengths of
+     * block_slots and force_block_slots): the work of each pass.
+     */
+    std::pair<std::size_t, std::size_t>
+    visited_slots() const
+    {
+      std::pair<std::size_t, std::size_t> sums{0, 0};
+      for (std::size_t b = 0; b < block_slots.size(); ++b)
+        {
+          sums.first += block_slots[b].second - block_slots[b].first;
+          sums.second += force_block_slots[b].second - force_block_slots[b].first;
+        }
+      return sums;
+    }
+
     /** Slots in the padded box. */
     std::size_t
     n_slots() const
@@ -163,6 +189,11 @@ namespace PeriArlequin
      * (the ends of ghost lines, the surfaces).
      */
     std::vector<std::pair<unsigned int, unsigned int>> block_slots;
+    /**
+     * The same for the force pass: the slots of the bonds whose pair force is used (see
+     * restrict_force_pass()); block_slots until that is called.
+     */
+    std::vector<std::pair<unsigned int, unsigned int>> force_block_slots;
     /** The longest run. */
     unsigned int max_run_length = 0;
 
@@ -198,6 +229,11 @@ namespace PeriArlequin
     std::size_t               n_box_slots = 0;
     /** The run of each lattice line of the box (by slot / stride[1]), or -1. */
     std::vector<int> run_of_line;
+    /**
+     * Per slot, bit 0: the force density of its particle is used; bit 1: its force state is
+     * (restrict_force_pass(); empty: every bond's pair force is used).
+     */
+    std::vector<std::uint8_t> force_use;
     /** The phase (0: even slabs, 1: odd) in which the passes visit each run. */
     std::vector<std::uint8_t> run_phase;
     unsigned int              n_held  = 0;
