@@ -26,17 +26,16 @@ namespace PeriArlequin
   namespace internal
   {
     template <int dim>
-    void
-    mark_cells_near(const FEZone<dim>             &fe_zone,
-                    const std::vector<Point<dim>> &points,
-                    const double                   distance,
-                    std::vector<bool>             &convert)
+    PointBins<dim>::PointBins(const std::vector<Point<dim>> &points, const double distance)
+      : distance(distance)
+      , bounds{Point<dim>(), Point<dim>()}
+      , binned(points.size())
     {
+      n_bins.fill(1);
+      bin_start.assign(2, 0);
       if (points.empty())
         return;
-      // The points binned on a grid of bins at least `distance` wide (at most about four
-      // bins a point): a cell looks only at the bins its box, widened by `distance`, touches.
-      Box<dim> bounds{points[0], points[0]};
+      bounds = Box<dim>{points[0], points[0]};
       for (const Point<dim> &p : points)
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -47,70 +46,117 @@ namespace PeriArlequin
       for (unsigned int d = 0; d < dim; ++d)
         volume *= bounds.upper[d] - bounds.lower[d] + distance;
       const double widest = std::max(distance, std::pow(volume / (4. * points.size()), 1. / dim));
-      const double bin    = widest > 0 ? widest : 1.;
-      std::array<unsigned int, dim> n_bins;
-      std::size_t                   n_all_bins = 1;
+      bin                 = widest > 0 ? widest : 1.;
+      std::size_t n_all_bins = 1;
       for (unsigned int d = 0; d < dim; ++d)
         {
           n_bins[d] = static_cast<unsigned int>((bounds.upper[d] - bounds.lower[d]) / bin) + 1;
           n_all_bins *= n_bins[d];
         }
-      const auto bin_along = [&](const double x, const unsigned int d) {
-        return static_cast<int>(std::floor((x - bounds.lower[d]) / bin));
-      };
       const auto bin_of = [&](const Point<dim> &p) {
         std::size_t index = 0;
         for (int d = dim - 1; d >= 0; --d)
-          index =
-            index * n_bins[d] + std::min<int>(bin_along(p[d], d), static_cast<int>(n_bins[d]) - 1);
+          index = index * n_bins[d] + std::min<unsigned int>(static_cast<unsigned int>(std::floor(
+                                                               (p[d] - bounds.lower[d]) / bin)),
+                                                             n_bins[d] - 1);
         return index;
       };
-      std::vector<std::size_t> bin_start(n_all_bins + 1, 0);
+      bin_start.assign(n_all_bins + 1, 0);
       for (const Point<dim> &p : points)
         ++bin_start[bin_of(p) + 1];
       for (std::size_t b = 0; b < n_all_bins; ++b)
         bin_start[b + 1] += bin_start[b];
-      std::vector<Point<dim>>  binned(points.size());
       std::vector<std::size_t> next(bin_start.begin(), bin_start.end() - 1);
       for (const Point<dim> &p : points)
         binned[next[bin_of(p)]++] = p;
+    }
 
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+    template <int dim>
+    template <typename Visitor>
+    bool
+    PointBins<dim>::visit_near(const Box<dim> &box, const Visitor &visit) const
+    {
+      if (binned.empty())
+        return false;
+      const auto bin_along = [&](const double x, const unsigned int d) {
+        return static_cast<int>(std::floor((x - bounds.lower[d]) / bin));
+      };
+      std::array<int, dim> first, last;
+      for (unsigned int d = 0; d < dim; ++d)
         {
-          if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
-            continue;
-          const Box<dim>       box = cell_box<dim>(cell);
-          std::array<int, dim> first, last;
-          bool                 outside = false;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              first[d] = std::max(bin_along(box.lower[d] - distance, d), 0);
-              last[d] =
-                std::min(bin_along(box.upper[d] + distance, d), static_cast<int>(n_bins[d]) - 1);
-              outside = outside || first[d] > last[d];
-            }
-          if (outside)
-            continue;
-          // Every bin of the block [first, last], the first axis fastest.
-          std::array<int, dim> b    = first;
-          bool                 near = false;
-          while (!near)
-            {
-              std::size_t index = 0;
-              for (int d = dim - 1; d >= 0; --d)
-                index = index * n_bins[d] + b[d];
-              for (std::size_t k = bin_start[index]; k < bin_start[index + 1] && !near; ++k)
-                near = box.distance(binned[k]) < distance;
-              unsigned int d = 0;
-              while (d < dim && b[d] == last[d])
-                b[d] = first[d], ++d;
-              if (d == dim)
-                break;
-              ++b[d];
-            }
-          if (near)
-            convert[cell->active_cell_index()] = true;
+          first[d] = std::max(bin_along(box.lower[d] - distance, d), 0);
+          last[d] =
+            std::min(bin_along(box.upper[d] + distance, d), static_cast<int>(n_bins[d]) - 1);
+          if (first[d] > last[d])
+            return false;
         }
+      // Every bin of the block [first, last], the first axis fastest.
+      std::array<int, dim> b = first;
+      while (true)
+        {
+          std::size_t index = 0;
+          for (int d = dim - 1; d >= 0; --d)
+            index = index * n_bins[d] + b[d];
+          for (std::size_t k = bin_start[index]; k < bin_start[index + 1]; ++k)
+            if (box.distance(binned[k]) < distance && visit(binned[k]))
+              return true;
+          unsigned int d = 0;
+          while (d < dim && b[d] == last[d])
+            b[d] = first[d], ++d;
+          if (d == dim)
+            return false;
+          ++b[d];
+        }
+    }
+
+    template <int dim>
+    bool
+    PointBins<dim>::any_near(const Box<dim> &box) const
+    {
+      return visit_near(box, [](const Point<dim> &) { return true; });
+    }
+
+    template <int dim>
+    void
+    PointBins<dim>::collect_near(const Box<dim> &box, std::vector<Point<dim>> &near) const
+    {
+      visit_near(box, [&](const Point<dim> &p) {
+        near.push_back(p);
+        return false;
+      });
+    }
+
+    template <int dim>
+    void
+    mark_cells_near(const FEZone<dim>             &fe_zone,
+                    const std::vector<Point<dim>> &points,
+                    const double                   distance,
+                    std::vector<bool>             &convert)
+    {
+      if (points.empty())
+        return;
+      const PointBins<dim> bins(points, distance);
+      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 &&
+            bins.any_near(cell_box<dim>(cell)))
+          convert[cell->active_cell_index()] = true;
+    }
+
+    template <int dim>
+    std::vector<Point<dim>>
+    points_near_cells(const FEZone<dim>             &fe_zone,
+                      const std::vector<Point<dim>> &points,
+                      const double                   distance,
+                      const std::vector<bool>       &cells)
+    {
+      std::vector<Point<dim>> near;
+      if (points.empty())
+        return near;
+      const PointBins<dim> bins(points, distance);
+      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && cells[cell->active_cell_index()])
+          bins.collect_near(cell_box<dim>(cell), near);
+      return near;
     }
 
     template <int dim>
@@ -129,6 +175,18 @@ namespace PeriArlequin
       return points;
     }
 
+    template class PointBins<2>;
+    template class PointBins<3>;
+    template std::vector<Point<2>>
+    points_near_cells(const FEZone<2> &,
+                      const std::vector<Point<2>> &,
+                      const double,
+                      const std::vector<bool> &);
+    template std::vector<Point<3>>
+    points_near_cells(const FEZone<3> &,
+                      const std::vector<Point<3>> &,
+                      const double,
+                      const std::vector<bool> &);
     template void
     mark_cells_near(const FEZone<2> &,
                     const std::vector<Point<2>> &,

@@ -56,10 +56,39 @@ namespace PeriArlequin
                   "default): automatic, ten times the time a longitudinal wave needs to cross "
                   "a horizon (several periods of the surface layer's vibration); negative: "
                   "none, the new particles take the PD forces at once [s].");
+      entries.add("Lead distance",
+                  lead_distance,
+                  Patterns::Double(),
+                  "A growth caused by damage (the per-step trigger or a criterion's flag "
+                  "near damage) also converts the FE cells within this distance of the "
+                  "damage that caused it: the damaged particles within the conversion distance "
+                  "of a converting cell, which are the running crack tips (the crack faces "
+                  "behind them lie farther from the FE zone). The tips then run for several "
+                  "check intervals before the zone must grow again: fewer growths for a "
+                  "wider zone around the crack paths. 0 (the default): automatic, twice the "
+                  "conversion distance (trigger distance plus c_s dt Check interval); "
+                  "negative: no lead, a growth converts the flagged cells only [m].");
     }
     template struct AdaptivePDZone<2>;
     template struct AdaptivePDZone<3>;
   } // namespace Parameters
+
+  namespace
+  {
+    /** Sort @p points lexicographically and drop repeated ones. */
+    template <int dim>
+    void
+    sort_and_unique(std::vector<Point<dim>> &points)
+    {
+      std::sort(points.begin(), points.end(), [](const Point<dim> &a, const Point<dim> &b) {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a[d] != b[d])
+            return a[d] < b[d];
+        return false;
+      });
+      points.erase(std::unique(points.begin(), points.end()), points.end());
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -134,6 +163,8 @@ namespace PeriArlequin
     context.trigger_distance             = 2. * (pd.horizon() + 0.5 * pd.lattice_spacing) +
                                material.longitudinal_wave_speed(dim) * time_step;
     context.crack_speed_bound = material.shear_wave_speed();
+    context.lead_distance     = parameters.lead_distance == 0 ? 2. * context.conversion_distance() :
+                                                                std::max(parameters.lead_distance, 0.);
     // A horizon over the longitudinal wave speed: the time scale of the surface layer.
     const double horizon_time = pd.horizon() / material.longitudinal_wave_speed(dim);
     context.settling_time =
@@ -165,6 +196,16 @@ namespace PeriArlequin
         context.loaded_boundaries.insert(b);
     for (const auto &criterion : criteria)
       criterion->initialize(fe_zone, pd_zone, context);
+
+    boundary_vertices.clear();
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (const unsigned int v : face->vertex_indices())
+              boundary_vertices.push_back(face->vertex(v));
+    boundary_vertices = internal::gather_points(boundary_vertices, pd_zone.get_communicator());
+    sort_and_unique(boundary_vertices);
   }
 
   template <int dim>
@@ -183,17 +224,23 @@ namespace PeriArlequin
 
   template <int dim>
   std::vector<Point<dim>>
-  PDZoneGrowth<dim>::damage_near_fe_cells(const FEZone<dim> &fe_zone,
-                                          const PDZone<dim> &pd_zone) const
+  PDZoneGrowth<dim>::take_new_damage(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone)
   {
-    const MPI_Comm communicator = pd_zone.get_communicator();
-    const auto    &broke        = pd_zone.particles_with_new_breaks();
-    if (!Utilities::MPI::logical_or(!broke.empty(), communicator))
+    const MPI_Comm          communicator = pd_zone.get_communicator();
+    std::vector<Point<dim>> damage       = pd_zone.new_damage_points();
+    if (!Utilities::MPI::logical_or(!damage.empty(), communicator))
       return {};
-    const auto              x = pd_zone.reference_positions();
-    std::vector<Point<dim>> damage;
-    for (const unsigned int i : broke)
-      damage.push_back(x[i]);
+    sort_and_unique(damage);
+    if (context.lead_distance > 0)
+      {
+        running_damage.insert(running_damage.end(), damage.begin(), damage.end());
+        // A tip particle breaks bonds in many steps: keep each position once.
+        if (running_damage.size() > 2 * running_damage_compacted + 1024)
+          {
+            sort_and_unique(running_damage);
+            running_damage_compacted = running_damage.size();
+          }
+      }
     damage = internal::gather_points(damage, communicator);
     std::vector<bool> near(fe_zone.get_dof_handler().get_triangulation().n_active_cells(), false);
     internal::mark_cells_near(fe_zone, damage, context.trigger_distance, near);
@@ -214,7 +261,8 @@ namespace PeriArlequin
   std::vector<Box<dim>>
   PDZoneGrowth<dim>::flagged_boxes(const FEZone<dim>      &fe_zone,
                                    const PDZone<dim>      &pd_zone,
-                                   std::vector<Point<dim>> new_damage) const
+                                   std::vector<Point<dim>> new_damage,
+                                   const double            band_width) const
   {
     const auto       &triangulation = fe_zone.get_dof_handler().get_triangulation();
     std::vector<bool> convert(triangulation.n_active_cells(), false);
@@ -222,6 +270,8 @@ namespace PeriArlequin
       criterion->mark_cells(fe_zone, pd_zone, convert);
     if (!new_damage.empty())
       internal::mark_cells_near(fe_zone, new_damage, context.conversion_distance(), convert);
+    if (context.lead_distance > 0)
+      add_lead(fe_zone, pd_zone, band_width, convert);
     // Each converted cell as its lower and upper corner.
     std::vector<Point<dim>> local_corners;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -240,6 +290,45 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  PDZoneGrowth<dim>::add_lead(const FEZone<dim> &fe_zone,
+                              const PDZone<dim> &pd_zone,
+                              const double       band_width,
+                              std::vector<bool> &convert) const
+  {
+    const MPI_Comm    communicator = pd_zone.get_communicator();
+    std::vector<bool> converting(convert.size(), false);
+    bool              any = false;
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && convert[cell->active_cell_index()] &&
+          !pd_zone.contains_cell(cell))
+        converting[cell->active_cell_index()] = any = true;
+    if (!Utilities::MPI::logical_or(any, communicator))
+      return;
+    // The running damage near the converting cells; a point near several cells once.
+    std::vector<Point<dim>> leading =
+      internal::points_near_cells(fe_zone,
+                                  gather_running_damage(communicator),
+                                  context.conversion_distance(),
+                                  converting);
+    sort_and_unique(leading);
+    std::vector<bool> lead(convert.size(), false);
+    internal::mark_cells_near(fe_zone,
+                              internal::gather_points(leading, communicator),
+                              context.lead_distance,
+                              lead);
+    // Cells within the band width of the boundary are left to the damage: in PD the surface
+    // layer of a free or a loaded edge carries other strains than the continuum (the surface
+    // effect), and a growth that no damage asks for should not put it in or next to the band.
+    std::vector<bool> near_boundary(convert.size(), false);
+    internal::mark_cells_near(fe_zone, boundary_vertices, band_width, near_boundary);
+    for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && lead[cell->active_cell_index()] &&
+          !near_boundary[cell->active_cell_index()])
+        convert[cell->active_cell_index()] = true;
+  }
+
+  template <int dim>
   unsigned int
   PDZoneGrowth<dim>::grow(FEZone<dim>                   &fe_zone,
                           PDZone<dim>                   &pd_zone,
@@ -252,7 +341,7 @@ namespace PeriArlequin
     std::vector<Box<dim>> boxes;
     {
       TimerOutput::Scope scope(timer, "growth: criteria");
-      boxes = flagged_boxes(fe_zone, pd_zone, new_damage);
+      boxes = flagged_boxes(fe_zone, pd_zone, new_damage, blending.overlap_width(Point<dim>()));
     }
     if (boxes.empty())
       return 0;
@@ -359,6 +448,8 @@ namespace PeriArlequin
 
     conversion_energy += total_energy() - energy_before;
     converted_cells += boxes.size();
+    running_damage.clear();
+    running_damage_compacted = 0;
     return boxes.size();
   }
 
@@ -419,11 +510,22 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  PDZoneGrowth<dim>::restore_totals(const unsigned int cells, const double energy)
+  std::vector<Point<dim>>
+  PDZoneGrowth<dim>::gather_running_damage(const MPI_Comm communicator) const
   {
-    converted_cells   = cells;
-    conversion_energy = energy;
+    return internal::gather_points(running_damage, communicator);
+  }
+
+  template <int dim>
+  void
+  PDZoneGrowth<dim>::restore(const unsigned int             cells,
+                             const double                   energy,
+                             const std::vector<Point<dim>> &damage)
+  {
+    converted_cells          = cells;
+    conversion_energy        = energy;
+    running_damage           = damage;
+    running_damage_compacted = running_damage.size();
   }
 
   template <int dim>

@@ -180,7 +180,7 @@ namespace PeriArlequin
     restrict_force_pass();
     find_bonds_near_overlap();
     model->initialize(material, bonds);
-    new_breaks.clear();
+    new_damage.clear();
 
     const unsigned int n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
     state.reinit(n_owned, n_total);
@@ -511,10 +511,10 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  const std::vector<unsigned int> &
-  PDZone<dim>::particles_with_new_breaks() const
+  const std::vector<Point<dim>> &
+  PDZone<dim>::new_damage_points() const
   {
-    return new_breaks;
+    return new_damage;
   }
 
   template <int dim>

@@ -143,7 +143,13 @@ namespace PeriArlequin
             scalars_current = fracture->needs_particle_scalars() &&
                               !Utilities::MPI::logical_or(!broken.empty(), communicator);
           }
-        new_breaks = particles_storing(broken);
+        new_damage.clear();
+        const auto x = reference_positions();
+        for (const StoredBond &bond : broken)
+          {
+            new_damage.push_back(x[bond.particle]);
+            new_damage.push_back(x[bonds.neighbor(bond.particle, bond.index)]);
+          }
       }
     if (checks_overlap)
       check_damage_near_overlap(time);

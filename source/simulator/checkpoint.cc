@@ -79,7 +79,19 @@ namespace PeriArlequin
   {
     integrator->resume_at(resumed->step);
     if (zone_growth)
-      zone_growth->restore_totals(resumed->converted_cells, resumed->conversion_energy);
+      {
+        // Every rank read the record: rank 0 alone takes the running damage.
+        std::vector<Point<dim>> running_damage;
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          for (std::size_t k = 0; k + dim <= resumed->running_damage.size(); k += dim)
+            {
+              Point<dim> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = resumed->running_damage[k + d];
+              running_damage.push_back(p);
+            }
+        zone_growth->restore(resumed->converted_cells, resumed->conversion_energy, running_damage);
+      }
     repartitions = resumed->repartitions;
     // load() cut the cells evenly by count: on as many ranks as the checkpointed run, its
     // partition again (so the run goes on bit for bit), on another number, the balance of
@@ -171,9 +183,14 @@ namespace PeriArlequin
 
     const std::vector<double> pd_work =
       Utilities::MPI::gather(communicator, pd_zone ? pd_zone->local_external_work() : 0., 0);
+    const std::vector<Point<dim>> running_damage =
+      zone_growth ? zone_growth->gather_running_damage(communicator) : std::vector<Point<dim>>();
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         CheckpointRecord record;
+        for (const Point<dim> &p : running_damage)
+          for (unsigned int d = 0; d < dim; ++d)
+            record.running_damage.push_back(p[d]);
         record.parameters = physics_parameters;
         record.n_ranks    = Utilities::MPI::n_mpi_processes(communicator);
         record.step       = get_step_number();

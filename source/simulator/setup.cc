@@ -258,8 +258,10 @@ namespace PeriArlequin
               << growth.conversion_distance() << " m of the new damage (a crack at the shear "
               << "speed " << growth.crack_speed_bound << " m/s runs "
               << growth.crack_speed_bound * growth.time_step * growth.check_interval
-              << " m between two checks); new particles settle over " << growth.settling_time
-              << " s" << std::endl;
+              << " m between two checks); a growth caused by damage converts the FE cells "
+              << "within " << growth.lead_distance
+              << " m of the bonds broken since the previous one (the lead); new particles "
+              << "settle over " << growth.settling_time << " s" << std::endl;
         for (const std::string &note : zone_growth->get_notes())
           pcout << "  Note: " << note << std::endl;
       }

@@ -116,8 +116,7 @@ namespace PeriArlequin
   Simulator<dim>::grow_pd_zone()
   {
     TimerOutput::Scope            scope(timer, "PD zone growth");
-    const std::vector<Point<dim>> new_damage =
-      zone_growth->damage_near_fe_cells(*fe_zone, *pd_zone);
+    const std::vector<Point<dim>> new_damage = zone_growth->take_new_damage(*fe_zone, *pd_zone);
     if (new_damage.empty() && !zone_growth->due(get_step_number()))
       return 0;
     const unsigned int n_cells = zone_growth->grow(

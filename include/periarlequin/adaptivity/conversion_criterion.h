@@ -3,12 +3,14 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
+#include <periarlequin/base/regions.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <vector>
 
@@ -38,6 +40,11 @@ namespace PeriArlequin
      * PDZone::start_settling() [s].
      */
     double settling_time = 0;
+    /**
+     * A growth converts the FE cells within this distance of the damage that caused it
+     * (0: no lead) [m].
+     */
+    double lead_distance = 0;
     /** The boundary ids that carry a traction or a prescribed displacement. */
     std::set<types::boundary_id> loaded_boundaries;
 
@@ -126,6 +133,43 @@ namespace PeriArlequin
   namespace internal
   {
     /**
+     * Points binned on a grid of bins at least a search distance wide (at most about four
+     * bins a point), so that a box looks only at the bins it touches, widened by the
+     * distance, not at every point.
+     */
+    template <int dim>
+    class PointBins
+    {
+    public:
+      /** Bin @p points for searches out to @p distance [m]. */
+      PointBins(const std::vector<Point<dim>> &points, const double distance);
+
+      /** Is one of the points closer than the distance to @p box? */
+      bool
+      any_near(const Box<dim> &box) const;
+
+      /** Append the points closer than the distance to @p box to @p near. */
+      void
+      collect_near(const Box<dim> &box, std::vector<Point<dim>> &near) const;
+
+    private:
+      /**
+       * Call @p visit(p) for the points closer than the distance to @p box until it returns
+       * true; whether it did.
+       */
+      template <typename Visitor>
+      bool
+      visit_near(const Box<dim> &box, const Visitor &visit) const;
+
+      const double                  distance;
+      Box<dim>                      bounds;
+      double                        bin = 1;
+      std::array<unsigned int, dim> n_bins;
+      std::vector<std::size_t>      bin_start;
+      std::vector<Point<dim>>       binned;
+    };
+
+    /**
      * Flag the locally owned FE cells (with DoFs) within @p distance of one of @p points (the
      * points of all ranks; binned here, so that each cell looks at the points near it only).
      */
@@ -135,6 +179,17 @@ namespace PeriArlequin
                     const std::vector<Point<dim>> &points,
                     const double                   distance,
                     std::vector<bool>             &convert);
+
+    /**
+     * The points of @p points (the points of all ranks) within @p distance of a locally
+     * owned cell whose entry in @p cells is set (one entry per active cell).
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    points_near_cells(const FEZone<dim>             &fe_zone,
+                      const std::vector<Point<dim>> &points,
+                      const double                   distance,
+                      const std::vector<bool>       &cells);
 
     /** The points of all ranks in one list, in rank order (collective). */
     template <int dim>

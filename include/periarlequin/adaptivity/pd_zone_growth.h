@@ -30,6 +30,7 @@ namespace PeriArlequin
       unsigned int check_interval       = 10;
       double       imbalance_tolerance  = 0.1;
       double       settling_time        = 0;
+      double       lead_distance        = 0;
 
       void
       entries(ParameterEntries &entries);
@@ -54,6 +55,14 @@ namespace PeriArlequin
    * (two bond reaches plus a wave's run in a step) converts the cells around the new damage
    * at once, out to the conversion distance (GrowthContext). The overlap stop of the PD zone
    * stays as the last guard.
+   *
+   * A growth caused by damage also converts the FE cells within the lead distance of the
+   * running damage that caused it (bonds broken since the last growth, within the
+   * conversion distance of a cell that converts: the running crack tips, not a pre-crack or
+   * the crack faces behind the tips), so that the tips get room for several check intervals
+   * and the zone grows less often. The lead stops a band width short of the boundary: a
+   * growth that no damage asks for does not put the PD surface layer of an edge in or next
+   * to the band.
    */
   template <int dim>
   class PDZoneGrowth
@@ -95,13 +104,14 @@ namespace PeriArlequin
     due(const unsigned int step) const;
 
     /**
-     * The particles (of all ranks) whose bonds broke in the last step, if one of them lies
-     * within the trigger distance of an FE cell, else nothing: a growth is needed now,
+     * Take the damage of the last step: the particles whose bonds broke join the running
+     * damage (the lead of the next growth); returned (those of all ranks) if one of them
+     * lies within the trigger distance of an FE cell, else nothing: a growth is needed now,
      * whatever the check interval (collective; costs one reduction in a step that broke no
      * bond near an FE cell).
      */
     std::vector<Point<dim>>
-    damage_near_fe_cells(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone) const;
+    take_new_damage(const FEZone<dim> &fe_zone, const PDZone<dim> &pd_zone);
 
     /**
      * Convert the cells the criterion flags and the FE cells within the conversion distance
@@ -140,9 +150,21 @@ namespace PeriArlequin
     double
     energy_change() const;
 
-    /** The totals of a checkpointed run, to go on from. */
+    /**
+     * The running damage of all ranks (reference positions of the particles whose bonds
+     * broke since the last growth), for a checkpoint (collective).
+     */
+    std::vector<Point<dim>>
+    gather_running_damage(const MPI_Comm communicator) const;
+
+    /**
+     * The totals and the running damage of a checkpointed run, to go on from (the running
+     * damage of all ranks may be given to one rank: it is gathered before use).
+     */
     void
-    restore_totals(const unsigned int converted_cells, const double energy_change);
+    restore(const unsigned int             converted_cells,
+            const double                   energy_change,
+            const std::vector<Point<dim>> &running_damage);
 
     /** Adaptive PD zone/Load imbalance tolerance [-]. */
     double
@@ -150,13 +172,24 @@ namespace PeriArlequin
 
   private:
     /**
-     * The cells that are FE now and flagged by a criterion or near @p new_damage, as boxes,
-     * gathered from all ranks.
+     * The cells that are FE now and flagged by a criterion, near @p new_damage or in the
+     * lead (no nearer than @p band_width to the boundary), as boxes, gathered from all ranks.
      */
     std::vector<Box<dim>>
     flagged_boxes(const FEZone<dim>      &fe_zone,
                   const PDZone<dim>      &pd_zone,
-                  std::vector<Point<dim>> new_damage) const;
+                  std::vector<Point<dim>> new_damage,
+                  const double            band_width) const;
+    /**
+     * Flag in @p convert the FE cells within the lead distance of the running damage that
+     * lies within the conversion distance of a cell that converts (flagged and not PD yet),
+     * except those nearer than @p band_width to the boundary (collective).
+     */
+    void
+    add_lead(const FEZone<dim> &fe_zone,
+             const PDZone<dim> &pd_zone,
+             const double       band_width,
+             std::vector<bool> &convert) const;
     /**
      * Give the new pure-PD particles (those @p previous does not know) settling forces that
      * restore @p acceleration_before, the FE field's, from @p time on; their mass-weighted
@@ -174,8 +207,18 @@ namespace PeriArlequin
     const double             particle_reach;
     GrowthContext            context;
     std::vector<std::string> notes;
-    unsigned int             converted_cells   = 0;
-    double                   conversion_energy = 0.;
+    /**
+     * Reference positions of the owned particles whose bonds broke since the last growth
+     * (where the cracks run; pre-cracks and old crack faces are not in it), each at least
+     * once: the damage whose lead the next growth gives.
+     */
+    std::vector<Point<dim>> running_damage;
+    /** The vertices of the boundary faces of the mesh (all ranks), for the lead. */
+    std::vector<Point<dim>> boundary_vertices;
+    /** The size of running_damage after its duplicates were last removed. */
+    std::size_t  running_damage_compacted = 0;
+    unsigned int converted_cells          = 0;
+    double       conversion_energy        = 0.;
   };
 } // namespace PeriArlequin
 

@@ -14,20 +14,6 @@ namespace PeriArlequin
   using namespace dealii;
 
   /**
-   * The owned particles that store the bonds @p broken, in their order (consecutive repeats
-   * merged).
-   */
-  inline std::vector<unsigned int>
-  particles_storing(const std::vector<StoredBond> &broken)
-  {
-    std::vector<unsigned int> particles;
-    for (const StoredBond &bond : broken)
-      if (particles.empty() || particles.back() != bond.particle)
-        particles.push_back(bond.particle);
-    return particles;
-  }
-
-  /**
    * The bonds as a fracture criterion sees them in one step: the intact bonds stored for
    * the owned particles (unbreakable ones left out), each with its extension under the
    * current displacements, and a way to break one. The PD zone refreshes its views of the

@@ -184,11 +184,13 @@ namespace PeriArlequin
     std::size_t
     n_global_broken_bonds() const;
     /**
-     * The owned particles that stored a bond broken in the last force computation (local
-     * numbers): where damage is new, for the checks of an adaptive zone.
+     * The reference positions of both ends of the bonds this rank broke in the last force
+     * computation (a point may repeat): where damage is new, for the checks of an adaptive
+     * zone. Over all ranks, the same points whatever the partition (a bond to a ghost,
+     * broken on two ranks, gives its two ends on each).
      */
-    const std::vector<unsigned int> &
-    particles_with_new_breaks() const;
+    const std::vector<Point<dim>> &
+    new_damage_points() const;
     /** The fracture criterion's critical stretch (0 without fracture). */
     double
     get_critical_stretch() const;
@@ -597,8 +599,8 @@ namespace PeriArlequin
      * (the force pass skips their bonds where no other end needs them) and are set to 0.
      */
     std::vector<unsigned int> unforced;
-    /** See particles_with_new_breaks(). */
-    std::vector<unsigned int> new_breaks;
+    /** See new_damage_points(). */
+    std::vector<Point<dim>> new_damage;
     /** Handle of the particle state attached to the cells during a repartition. */
     unsigned int state_handle = numbers::invalid_unsigned_int;
     /**
