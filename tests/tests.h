@@ -393,6 +393,39 @@ namespace PeriArlequinTests
   }
 
   /**
+   * A growing zone on all ranks against rank 0 alone: @p parallel, a finished run of the case
+   * @p parameters on MPI_COMM_WORLD, and the same case run here on MPI_COMM_SELF must break
+   * the same bonds, convert the same cells and hold the same particles at every record, and
+   * agree in crack area and total energy to 1e-10 of their magnitude (sums in another order).
+   */
+  template <int dim>
+  void
+  check_growth_matches_rank_0(const PeriArlequin::Simulator<dim> &parallel,
+                              const std::string                  &parameters)
+  {
+    const auto &history = parallel.get_energy_history();
+    double      counts = 0, energies = 0;
+    if (is_root())
+      {
+        auto serial = make_simulator<dim>(parameters, MPI_COMM_SELF);
+        serial->run();
+        const auto &reference = serial->get_energy_history();
+        counts                = largest_column_difference(history,
+                                           reference,
+                                           {"broken_bonds", "converted_cells", "pd_particles"},
+                                           false);
+        energies =
+          largest_column_difference(history, reference, {"crack_area", "total_energy"}, true);
+      }
+    check_below("largest |broken bonds, converted cells, particles: all ranks - rank 0 alone|",
+                Utilities::MPI::broadcast(MPI_COMM_WORLD, counts, 0),
+                1e-15);
+    check_below("largest relative |crack area, total energy: all ranks - rank 0 alone|",
+                Utilities::MPI::broadcast(MPI_COMM_WORLD, energies, 0),
+                1e-10);
+  }
+
+  /**
    * Energy conservation of a finished run: the largest |total energy - initial total| over
    * the history, relative to the largest mechanical energy reached (loads may pump energy
    * in), must stay below @p bound; and, so that the check is not vacuous, kinetic and strain

@@ -14,12 +14,23 @@ namespace PeriArlequin
 {
   namespace
   {
-    /** The axis-aligned box of a cell of the (box) mesh. */
+    /**
+     * The smallest axis-aligned box around a cell: the cell itself on a box mesh; on a general
+     * mesh a little more, so a point near the cell is never missed (a point near the box but
+     * not the cell counts as near: a growth converts a little more, never less).
+     */
     template <int dim, typename CellIterator>
     Box<dim>
     cell_box(const CellIterator &cell)
     {
-      return Box<dim>{cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
+      Box<dim> box{cell->vertex(0), cell->vertex(0)};
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box.lower[d] = std::min(box.lower[d], cell->vertex(v)[d]);
+            box.upper[d] = std::max(box.upper[d], cell->vertex(v)[d]);
+          }
+      return box;
     }
   } // namespace
 

@@ -104,7 +104,6 @@ namespace PeriArlequin
   std::unique_ptr<PDZoneGrowth<dim>>
   PDZoneGrowth<dim>::create(ParameterHandler                    &prm,
                             const Parameters::Coupling          &coupling,
-                            const Parameters::Geometry          &geometry,
                             const Parameters::Peridynamics<dim> &pd_parameters)
   {
     prm.enter_subsection("Adaptive PD zone");
@@ -125,11 +124,6 @@ namespace PeriArlequin
                                   "none, unless the zones are coupled (Coupling/Method) across "
                                   "a band that can move with the PD region (Coupling/Overlap "
                                   "width > 0)");
-        if (!geometry.mesh_file.empty())
-          throw_invalid_parameter("Adaptive PD zone/Conversion criterion",
-                                  name,
-                                  "none with Geometry/Mesh file: converted cells join the PD "
-                                  "region as boxes, which only the cells of the box mesh are");
         std::vector<std::unique_ptr<ConversionCriterion<dim>>> criteria;
         for (const std::string &criterion : names)
           criteria.push_back(ConversionCriterionRegistry<dim>::create(criterion, prm));
@@ -258,8 +252,8 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  std::vector<Box<dim>>
-  PDZoneGrowth<dim>::flagged_boxes(const FEZone<dim>      &fe_zone,
+  Region<dim>
+  PDZoneGrowth<dim>::flagged_cells(const FEZone<dim>      &fe_zone,
                                    const PDZone<dim>      &pd_zone,
                                    std::vector<Point<dim>> new_damage,
                                    const double            band_width) const
@@ -272,21 +266,27 @@ namespace PeriArlequin
       internal::mark_cells_near(fe_zone, new_damage, context.conversion_distance(), convert);
     if (context.lead_distance > 0)
       add_lead(fe_zone, pd_zone, band_width, convert);
-    // Each converted cell as its lower and upper corner.
-    std::vector<Point<dim>> local_corners;
+    // Each converted cell as its vertices.
+    std::vector<Point<dim>> local_vertices;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && convert[cell->active_cell_index()] &&
           !pd_zone.contains_cell(cell))
-        {
-          local_corners.push_back(cell->vertex(0));
-          local_corners.push_back(cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1));
-        }
-    std::vector<Box<dim>> boxes;
-    for (const auto &corners :
-         Utilities::MPI::all_gather(pd_zone.get_communicator(), local_corners))
-      for (unsigned int k = 0; k < corners.size(); k += 2)
-        boxes.push_back({corners[k], corners[k + 1]});
-    return boxes;
+        for (const unsigned int v : cell->vertex_indices())
+          local_vertices.push_back(cell->vertex(v));
+    Region<dim>            flagged;
+    constexpr unsigned int n = GeometryInfo<dim>::vertices_per_cell;
+    for (const auto &vertices :
+         Utilities::MPI::all_gather(pd_zone.get_communicator(), local_vertices))
+      for (unsigned int k = 0; k < vertices.size(); k += n)
+        if (pd_zone.has_general_cells())
+          {
+            CellShape<dim> cell;
+            std::copy(vertices.begin() + k, vertices.begin() + k + n, cell.vertices.begin());
+            flagged.cells.push_back(cell);
+          }
+        else
+          flagged.boxes.push_back({vertices[k], vertices[k + n - 1]});
+    return flagged;
   }
 
   template <int dim>
@@ -338,26 +338,24 @@ namespace PeriArlequin
                           const std::vector<Point<dim>> &new_damage,
                           const double                   time)
   {
-    std::vector<Box<dim>> boxes;
+    Region<dim> flagged;
     {
       TimerOutput::Scope scope(timer, "growth: criteria");
-      boxes = flagged_boxes(fe_zone, pd_zone, new_damage, blending.overlap_width(Point<dim>()));
+      flagged = flagged_cells(fe_zone, pd_zone, new_damage, blending.overlap_width(Point<dim>()));
     }
-    if (boxes.empty())
+    const unsigned int n_flagged = flagged.n_pieces();
+    if (n_flagged == 0)
       return 0;
     const MPI_Comm communicator  = pd_zone.get_communicator();
     unsigned int   fe_cells_left = 0;
     for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 &&
-          std::none_of(boxes.begin(), boxes.end(), [&](const Box<dim> &box) {
-            return box.contains(cell->center());
-          }))
+          !flagged.contains(cell->center()))
         ++fe_cells_left;
     if (Utilities::MPI::sum(fe_cells_left, communicator) == 0)
       {
         std::ostringstream message;
-        message << "At t = " << time << " s the adaptive PD zone would take the last "
-                << boxes.size()
+        message << "At t = " << time << " s the adaptive PD zone would take the last " << n_flagged
                 << " FE cells: the PD zone has outgrown the FE zone, and a coupled run needs "
                    "an FE zone to couple to. This case needs PD everywhere: run it as pure PD "
                    "(Coupling/Method = none, Peridynamics/Region over the whole domain).";
@@ -376,19 +374,20 @@ namespace PeriArlequin
     std::vector<double> mass_before(pd_zone.n_owned_particles());
     for (unsigned int i = 0; i < mass_before.size(); ++i)
       mass_before[i] = pd_zone.is_slave(i) ? 0. : pd_zone.particle_mass(i);
-    blending.add_to_pd_region(boxes);
+    blending.add_to_pd_region(flagged);
     pd_zone.set_region(blending.pd_region());
     // The particles of the grown zone (the reach of the set-up); the new ones take the FE
     // field, which still lives in the converted cells.
     // The extent grew within the band and the particle reach of the converted cells only.
     const double                    reach = blending.overlap_width(Point<dim>()) + particle_reach;
-    const std::vector<unsigned int> previous = pd_zone.extend(
+    const std::vector<Box<dim>>     flagged_bounds = flagged.piece_bounds();
+    const std::vector<unsigned int> previous       = pd_zone.extend(
       [&](const Point<dim> &x) { return blending.distance_to_pd_part(x) <= particle_reach; },
       [&](const auto &cell) {
         const auto     corners = cell->bounding_box().get_boundary_points();
         const Box<dim> cell_box{corners.first, corners.second};
-        for (const Box<dim> &box : boxes)
-          if (cell_box.gap(box).norm() <= reach * (1. + 1e-12))
+        for (const Box<dim> &bounds : flagged_bounds)
+          if (cell_box.gap(bounds).norm() <= reach * (1. + 1e-12))
             return true;
         return false;
       });
@@ -447,10 +446,10 @@ namespace PeriArlequin
       settle_new_particles(pd_zone, previous, acceleration_before, time);
 
     conversion_energy += total_energy() - energy_before;
-    converted_cells += boxes.size();
+    converted_cells += n_flagged;
     running_damage.clear();
     running_damage_compacted = 0;
-    return boxes.size();
+    return n_flagged;
   }
 
   template <int dim>

@@ -98,17 +98,168 @@ namespace PeriArlequin
     return g;
   }
 
+  namespace
+  {
+    /**
+     * Call @p visit(simplex) for each simplex of the cell's surface: its edges in 2D, in 3D
+     * the triangles that join each face's centre to the face's edges.
+     */
+    template <int dim, typename Visitor>
+    void
+    for_each_surface_simplex(const CellShape<dim> &cell, const Visitor &visit)
+    {
+      for (unsigned int f = 0; f < GeometryInfo<dim>::faces_per_cell; ++f)
+        {
+          std::array<Point<dim>, GeometryInfo<dim>::vertices_per_face> v;
+          for (unsigned int i = 0; i < v.size(); ++i)
+            v[i] = cell.vertices[GeometryInfo<dim>::face_to_cell_vertices(f, i)];
+          if constexpr (dim == 2)
+            visit(std::array<Point<dim>, dim>{{v[0], v[1]}});
+          else
+            {
+              Point<dim> centre;
+              for (const Point<dim> &vertex : v)
+                centre += 0.25 * vertex;
+              // The face's vertices in deal.II's order, around the face.
+              constexpr std::array<unsigned int, 4> around = {{0, 1, 3, 2}};
+              for (unsigned int k = 0; k < 4; ++k)
+                visit(std::array<Point<dim>, dim>{{centre, v[around[k]], v[around[(k + 1) % 4]]}});
+            }
+        }
+    }
+
+    /** Distance from @p p to a segment (2D) or a triangle (3D). */
+    template <int dim>
+    double
+    distance_to_simplex(const Point<dim> &p, const std::array<Point<dim>, dim> &s)
+    {
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> edge = s[1] - s[0];
+          const double         t    = std::clamp(((p - s[0]) * edge) / edge.norm_square(), 0., 1.);
+          return p.distance(s[0] + t * edge);
+        }
+      else
+        {
+          // The nearest point by the region of the triangle's plane that holds p's projection:
+          // a vertex, an edge or the inside (barycentric coordinates from dot products).
+          const Tensor<1, dim> ab = s[1] - s[0], ac = s[2] - s[0];
+          const Tensor<1, dim> ap = p - s[0], bp = p - s[1], cp = p - s[2];
+          const double         d1 = ab * ap, d2 = ac * ap, d3 = ab * bp, d4 = ac * bp;
+          const double         d5 = ab * cp, d6 = ac * cp;
+          if (d1 <= 0 && d2 <= 0)
+            return p.distance(s[0]);
+          if (d3 >= 0 && d4 <= d3)
+            return p.distance(s[1]);
+          if (d6 >= 0 && d5 <= d6)
+            return p.distance(s[2]);
+          const double vc = d1 * d4 - d3 * d2;
+          if (vc <= 0 && d1 >= 0 && d3 <= 0)
+            return p.distance(s[0] + d1 / (d1 - d3) * ab);
+          const double vb = d5 * d2 - d1 * d6;
+          if (vb <= 0 && d2 >= 0 && d6 <= 0)
+            return p.distance(s[0] + d2 / (d2 - d6) * ac);
+          const double va = d3 * d6 - d5 * d4;
+          if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+            return p.distance(s[1] + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (s[2] - s[1]));
+          const double sum = va + vb + vc;
+          return p.distance(s[0] + (vb / sum) * ab + (vc / sum) * ac);
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  CellShape<dim>::distance(const Point<dim> &p) const
+  {
+    Point<dim> centre;
+    for (const Point<dim> &vertex : vertices)
+      centre += (1. / vertices.size()) * vertex;
+    // Inside when p lies in a simplex of the centre and a surface simplex; else the nearest
+    // surface simplex.
+    bool   inside  = false;
+    double nearest = std::numeric_limits<double>::infinity();
+    for_each_surface_simplex(*this, [&](const std::array<Point<dim>, dim> &s) {
+      if (inside)
+        return;
+      Tensor<2, dim> edges;
+      for (unsigned int k = 0; k < dim; ++k)
+        for (unsigned int d = 0; d < dim; ++d)
+          edges[d][k] = s[k][d] - centre[d];
+      const Tensor<1, dim> coordinates = invert(edges) * (p - centre);
+      double               sum         = 0;
+      bool                 in          = true;
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          in = in && coordinates[k] >= 0;
+          sum += coordinates[k];
+        }
+      inside  = in && sum <= 1;
+      nearest = std::min(nearest, distance_to_simplex<dim>(p, s));
+    });
+    return inside ? 0. : nearest;
+  }
+
+  template <int dim>
+  bool
+  CellShape<dim>::contains(const Point<dim> &p, const double tolerance) const
+  {
+    return bounding_box().contains(p, tolerance) && distance(p) <= tolerance;
+  }
+
+  template <int dim>
+  Box<dim>
+  CellShape<dim>::bounding_box() const
+  {
+    Box<dim> box{vertices[0], vertices[0]};
+    for (const Point<dim> &vertex : vertices)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box.lower[d] = std::min(box.lower[d], vertex[d]);
+          box.upper[d] = std::max(box.upper[d], vertex[d]);
+        }
+    return box;
+  }
+
+  template <int dim>
+  std::size_t
+  Region<dim>::n_pieces() const
+  {
+    return boxes.size() + cells.size();
+  }
+
+  template <int dim>
+  std::vector<Box<dim>>
+  Region<dim>::piece_bounds() const
+  {
+    std::vector<Box<dim>> bounds = boxes;
+    for (const auto &cell : cells)
+      bounds.push_back(cell.bounding_box());
+    return bounds;
+  }
+
+  template <int dim>
+  double
+  Region<dim>::piece_distance(const std::size_t k, const Point<dim> &p) const
+  {
+    return k < boxes.size() ? boxes[k].distance(p) : cells[k - boxes.size()].distance(p);
+  }
+
+  template <int dim>
+  void
+  Region<dim>::add(const Region<dim> &other)
+  {
+    boxes.insert(boxes.end(), other.boxes.begin(), other.boxes.end());
+    cells.insert(cells.end(), other.cells.begin(), other.cells.end());
+  }
+
   template <int dim>
   double
   Region<dim>::distance(const Point<dim> &p) const
   {
     double nearest = std::numeric_limits<double>::infinity();
-    for (const auto &box : boxes)
-      {
-        nearest = std::min(nearest, box.distance(p));
-        if (nearest == 0)
-          break;
-      }
+    for (std::size_t k = 0; k < n_pieces() && nearest > 0; ++k)
+      nearest = std::min(nearest, piece_distance(k, p));
     return nearest;
   }
 
@@ -141,13 +292,14 @@ namespace PeriArlequin
   template <int dim>
   RegionDistance<dim>::RegionDistance(const Region<dim> &source)
     : region(source)
+    , n_pieces(source.n_pieces())
   {
-    const std::vector<Box<dim>> &boxes = region.boxes;
-    // A few boxes are scanned; so is a region without extent.
-    if (boxes.size() <= 8)
+    // A few pieces are scanned; so is a region without extent.
+    if (n_pieces <= 8)
       return;
-    Box<dim> hull = boxes[0];
-    for (const auto &box : boxes)
+    const std::vector<Box<dim>> bounds = region.piece_bounds();
+    Box<dim>                    hull   = bounds[0];
+    for (const auto &box : bounds)
       for (unsigned int d = 0; d < dim; ++d)
         {
           hull.lower[d] = std::min(hull.lower[d], box.lower[d]);
@@ -161,9 +313,9 @@ namespace PeriArlequin
       }
     if (!(longest > 0))
       return;
-    // About four bins a box (a flat hull: along its longest side), at most sixteen.
-    const double n_boxes = boxes.size();
-    bin_width = std::max(std::pow(volume / (4. * n_boxes), 1. / dim), longest / (4. * n_boxes));
+    // About four bins a piece (a flat hull: along its longest side), at most sixteen.
+    const double n_bounds = bounds.size();
+    bin_width = std::max(std::pow(volume / (4. * n_bounds), 1. / dim), longest / (4. * n_bounds));
     std::size_t n_all = 0;
     do
       {
@@ -175,14 +327,14 @@ namespace PeriArlequin
               1;
             n_all *= n_bins[d];
           }
-        if (n_all > 16 * boxes.size())
+        if (n_all > 16 * bounds.size())
           bin_width *= 2;
       }
-    while (n_all > 16 * boxes.size());
+    while (n_all > 16 * bounds.size());
     origin = hull.lower;
 
-    // Each box is listed in the bins it touches, widened by a millionth of a bin on each
-    // side: rounding at a bin's edge cannot hide a box from the search.
+    // Each piece is listed in the bins its bounds touch, widened by a millionth of a bin on
+    // each side: rounding at a bin's edge cannot hide a piece from the search.
     const auto bin_range = [&](const Box<dim> &box) {
       std::array<int, dim> lower, upper;
       for (unsigned int d = 0; d < dim; ++d)
@@ -206,20 +358,20 @@ namespace PeriArlequin
       return i;
     };
     bin_begin.assign(n_all + 1, 0);
-    for (const auto &box : boxes)
+    for (const auto &box : bounds)
       {
         const auto [lower, upper] = bin_range(box);
         for_each_bin<dim>(lower, upper, [&](const auto &bin) { ++bin_begin[index(bin) + 1]; });
       }
     for (std::size_t b = 0; b < n_all; ++b)
       bin_begin[b + 1] += bin_begin[b];
-    bin_boxes.resize(bin_begin.back());
+    bin_pieces.resize(bin_begin.back());
     std::vector<unsigned int> filled(bin_begin.begin(), bin_begin.end() - 1);
-    for (unsigned int k = 0; k < boxes.size(); ++k)
+    for (unsigned int k = 0; k < bounds.size(); ++k)
       {
-        const auto [lower, upper] = bin_range(boxes[k]);
+        const auto [lower, upper] = bin_range(bounds[k]);
         for_each_bin<dim>(lower, upper, [&](const auto &bin) {
-          bin_boxes[filled[index(bin)]++] = k;
+          bin_pieces[filled[index(bin)]++] = k;
         });
       }
   }
@@ -228,7 +380,6 @@ namespace PeriArlequin
   double
   RegionDistance<dim>::distance(const Point<dim> &p) const
   {
-    const std::vector<Box<dim>> &boxes = region.boxes;
     if (bin_width == 0)
       return region.distance(p);
     std::array<int, dim> centre;
@@ -241,8 +392,8 @@ namespace PeriArlequin
         last_ring = std::max({last_ring, centre[d], last - centre[d]});
       }
     // After ring r (the bins r bins from the point's bin, the nearest bin of the grid if the
-    // point lies outside it), every box not met is at least r bin widths away. A point far
-    // from every box would visit more bins than there are boxes: it scans them instead.
+    // point lies outside it), every piece not met is at least r bin widths away. A point far
+    // from every piece would visit more bins than there are pieces: it scans them instead.
     double      nearest = std::numeric_limits<double>::infinity();
     std::size_t visited = 0;
     const auto  visit   = [&](const std::array<int, dim> &bin) {
@@ -250,12 +401,12 @@ namespace PeriArlequin
       for (unsigned int d = dim; d-- > 0;)
         i = i * n_bins[d] + bin[d];
       for (unsigned int b = bin_begin[i]; b < bin_begin[i + 1]; ++b)
-        nearest = std::min(nearest, boxes[bin_boxes[b]].distance(p));
+        nearest = std::min(nearest, region.piece_distance(bin_pieces[b], p));
       ++visited;
     };
     for (int r = 0; r <= last_ring; ++r)
       {
-        if (visited > boxes.size())
+        if (visited > n_pieces)
           return std::min(nearest, region.distance(p));
         // The ring's faces: bin[d] = centre[d] -+ r, the axes before d strictly inside the
         // ring (their faces are done), the axes after d across it.
@@ -293,6 +444,9 @@ namespace PeriArlequin
     for (const auto &box : boxes)
       if (box.contains(p, tolerance))
         return true;
+    for (const auto &cell : cells)
+      if (cell.contains(p, tolerance))
+        return true;
     return false;
   }
 
@@ -300,7 +454,7 @@ namespace PeriArlequin
   bool
   Region<dim>::empty() const
   {
-    return boxes.empty();
+    return boxes.empty() && cells.empty();
   }
 
   template <int dim>
@@ -443,6 +597,8 @@ namespace PeriArlequin
   parse_point_list<3>(const std::string &, const std::string &);
   template struct Box<2>;
   template struct Box<3>;
+  template struct CellShape<2>;
+  template struct CellShape<3>;
   template struct Region<2>;
   template struct Region<3>;
   template class RegionDistance<2>;

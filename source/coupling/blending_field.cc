@@ -294,10 +294,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  BlendingField<dim>::add_to_pd_region(const std::vector<Box<dim>> &boxes)
+  BlendingField<dim>::add_to_pd_region(const Region<dim> &converted)
   {
     Assert(is_band(), ExcMessage("Only a band overlap follows a growing PD region."));
-    pure_pd.boxes.insert(pure_pd.boxes.end(), boxes.begin(), boxes.end());
+    pure_pd.add(converted);
     pure_pd.coalesce(length_tolerance);
     distance_to_pure_pd = RegionDistance<dim>(pure_pd);
   }

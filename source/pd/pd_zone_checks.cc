@@ -21,6 +21,9 @@ namespace PeriArlequin
       std::ostringstream text;
       for (const Box<dim> &box : region.boxes)
         text << (text.tellp() > 0 ? " ; " : "") << box.lower << " : " << box.upper;
+      if (!region.cells.empty())
+        text << (text.tellp() > 0 ? " ; " : "") << "and " << region.cells.size()
+             << " cells of the mesh";
       return text.str();
     }
   } // namespace

@@ -133,6 +133,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  bool
+  PDZone<dim>::has_general_cells() const
+  {
+    return general_cells;
+  }
+
+  template <int dim>
   void
   PDZone<dim>::insert_particles(
     const std::function<bool(const Point<dim> &, types::particle_index)> &accept,

@@ -281,6 +281,22 @@ namespace PeriArlequin
     for (const Box<dim> &box : pd->get_region().boxes)
       for (unsigned int k = 0; k < 2 * dim; ++k)
         file << (k < dim ? box.lower[k] : box.upper[k - dim]) << (k + 1 < 2 * dim ? ',' : '\n');
+    // Cells of a general mesh that joined the region: their vertices, in deal.II's order.
+    const auto &cells = pd->get_region().cells;
+    if (cells.empty())
+      return;
+    std::string cells_name = name.str();
+    cells_name.replace(cells_name.rfind("_pd_region_"), 11, "_pd_cells_");
+    std::ofstream cells_file(cells_name);
+    AssertThrow(cells_file, ExcMessage("Cannot write " + cells_name));
+    cells_file << "# t = " << std::setprecision(10) << simulator.get_time()
+               << " s; each line the vertices x, y" << (dim == 3 ? ", z" : "")
+               << " of a cell, in deal.II's order\n";
+    for (const CellShape<dim> &cell : cells)
+      for (unsigned int v = 0; v < cell.vertices.size(); ++v)
+        for (unsigned int d = 0; d < dim; ++d)
+          cells_file << cell.vertices[v][d]
+                     << (v + 1 < cell.vertices.size() || d + 1 < dim ? ',' : '\n');
   }
 
   template class Postprocessor<2>;

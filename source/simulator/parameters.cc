@@ -109,7 +109,7 @@ namespace PeriArlequin
     if (contact_model != "none")
       contact = ContactRegistry<dim>::create(contact_model, prm);
     prm.leave_subsection();
-    zone_growth = PDZoneGrowth<dim>::create(prm, coupling_parameters, geometry, pd_parameters);
+    zone_growth = PDZoneGrowth<dim>::create(prm, coupling_parameters, pd_parameters);
     prm.enter_subsection("Postprocess");
     Parameters::Postprocess<dim> postprocess;
     ParameterEntries::parse_here(prm, postprocess, "Postprocess/");

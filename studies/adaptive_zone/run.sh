@@ -6,33 +6,37 @@
 # <work>/mixed_mode), and the zone figures of the shipped case
 # parameter_files/adaptive_crack_branching_2d.prm (scripts/plot_zone.sh, into <work>/zone):
 #   studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]
-# <parts> (default: all): branching, kink, figures, impact, spall. About 40 minutes for
-# branching, 50 for kink, 2 for impact and 1 for spall on one core. impact: the impact-driven
+# <parts> (default: all): branching, kink, figures, impact, spall, gmsh. About 40 minutes for
+# branching, 50 for kink, 2 for impact, 1 for spall and 1 for gmsh on one core. impact: the impact-driven
 # mode II plate of impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with
 # the strain criterion added; checked every 50 steps), one thread each, one after the other;
 # prints the table of the README and draws the damage maps (into <work>/impact). spall: the
 # strip of spall_strip.prm as pure PD and adaptive from PD on [40, 50] mm (damage distance;
-# with strain; with strain and without settling); prints the table of the README.
+# with strain; with strain and without settling); prints the table of the README. gmsh: the
+# plate with a hole of hole_stretch.prm (a Gmsh mesh) as pure PD and adaptive from PD around
+# the hole (damage distance; with strain), three repeats side by side, one thread each; prints
+# the tables of the README.
 set -euo pipefail
 usage="usage: studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]"
 build=$(cd "${1:?$usage}" && pwd)
 work=${2:?$usage}
 ranks=${3:-1}
-parts=${4:-branching kink figures impact spall}
+parts=${4:-branching kink figures impact spall gmsh}
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 mkdir -p "$work"
 work=$(cd "$work" && pwd)
 
 # The lines that make a pure-PD case adaptive: PD first on <region>, weak coupling with force
-# blending across a band of two FE cells (5 mm), Conversion criterion = <criterion>, then any
-# further lines of subsection "Adaptive PD zone".
+# blending across a band of width $band (default two FE cells of the box meshes, 5 mm),
+# Conversion criterion = <criterion>, then any further lines of subsection "Adaptive PD zone".
+band=0.005
 adaptive_lines() {
   local region=$1 criterion=$2
   shift 2
   printf '%s\n' "subsection Peridynamics" "  set Region = $region" "end" \
     "subsection Coupling" "  set Method        = weak" "  set Blending      = force" \
-    "  set Overlap width = 0.005" "end" \
+    "  set Overlap width = $band" "end" \
     "subsection Adaptive PD zone" "  set Conversion criterion = $criterion" "$@" "end"
 }
 
@@ -141,6 +145,68 @@ for part in $parts; do
       done
       cd "$top"
       echo "wrote the spall runs to $work/spall" ;;
+    gmsh)
+      mkdir -p "$work/gmsh"
+      cd "$work/gmsh"
+      runs="pd damage_distance strain"
+      band=0.008 # the unstructured cells are about 4.5 mm
+      for run in $runs; do
+        {
+          echo "include $here/hole_stretch.prm"
+          echo "subsection Geometry"
+          echo "  set Mesh file = $top/examples/gmsh/plate_with_hole.msh"
+          echo "end"
+          case $run in
+            damage_distance) adaptive_lines "0.035, 0.01 : 0.065, 0.04" "damage distance" ;;
+            strain) adaptive_lines "0.035, 0.01 : 0.065, 0.04" "damage distance, strain" ;;
+          esac
+          echo "subsection Output"
+          echo "  set Directory = $work/gmsh/$run"
+          echo "end"
+        } > "$run.prm"
+      done
+      # Three repeats, the runs of a repeat one after the other (ratios within a repeat).
+      for repeat in 1 2 3; do
+        for run in $runs; do
+          DEAL_II_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" \
+            "$build/periarlequin" "$run.prm" > "$run.$repeat.log" 2>&1
+        done
+      done
+      echo "| run | time loop [s], 3 repeats | median / pure PD | growth [s] (median) | PD particles at the end | first break [µs] | broken-bond energy at 10 / 16 / 24 µs [J/m] |"
+      echo "|---|---|---|---|---|---|---|"
+      pd_median=""
+      for run in $runs; do
+        loops=$(for repeat in 1 2 3; do sed -n 's/^Time loop: .* in \([0-9.e+-]*\) s.*/\1/p' "$run.$repeat.log"; done)
+        median=$(echo "$loops" | sort -g | sed -n 2p)
+        pd_median=${pd_median:-$median}
+        growth=$(for repeat in 1 2 3; do awk -F'|' '$2 ~ /^ *PD zone growth/ { gsub(/[ s]/, "", $4); print $4 }' "$run.$repeat.log"; done | sort -g | sed -n 2p)
+        awk -F, -v run="$run" -v loops="$(echo $loops | sed 's/ /, /g')" -v ratio="$(awk -v a="$median" -v b="$pd_median" 'BEGIN { printf "%.2f", a / b }')" -v growth="${growth:-0}" '
+          NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+          first == "" && $col["broken_bonds"] > 0 { first = sprintf("%.1f", 1e6 * $col["time"]) }
+          $1 == 250 || $1 == 400 || $1 == 600 { energy = energy (energy == "" ? "" : " / ") sprintf("%.3f", $col["broken_bond_energy"]) }
+          { particles = $col["pd_particles"] }
+          END { printf "| %s | %s | %s | %.2f | %d | %s | %s |\n", run, loops, ratio, growth, particles, first, energy }' \
+          "$run/solution_energy.csv"
+      done
+      echo
+      echo "Crack tips (x, y) [mm] of the four branches, sorted by x then y:"
+      for run in $runs; do
+        awk -F, -v run="$run" '
+          NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+          $1 == 250 || $1 == 300 || $1 == 350 || $1 == 400 {
+            line = ""
+            for (b = 0; b < 4; ++b)
+              if ($col["branch_" b "_x"] != "nan")
+                tips[b] = sprintf("(%.1f, %.1f)", 1e3 * $col["branch_" b "_x"], 1e3 * $col["branch_" b "_y"])
+              else
+                tips[b] = ""
+            n = asort(tips)
+            for (b = 1; b <= n; ++b) if (tips[b] != "") line = line " " tips[b]
+            printf "%s at %.0f us:%s\n", run, 1e6 * $col["time"], line
+          }' "$run/solution_energy.csv"
+      done
+      cd "$top"
+      echo "wrote the Gmsh runs to $work/gmsh" ;;
     *) echo "unknown part $part" >&2; exit 1 ;;
   esac
 done

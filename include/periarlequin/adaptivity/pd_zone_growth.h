@@ -39,7 +39,8 @@ namespace PeriArlequin
 
   /**
    * The growth of an adaptive PD zone, between steps: the FE cells that one of the conversion
-   * criteria flags become pure PD. Their boxes join the PD region; the overlap band and the
+   * criteria flags become pure PD. They join the PD region (as boxes, or as cells of a general
+   * mesh); the overlap band and the
    * slave layer move outward; new particles fill the lattice sites the grown zone needs, with
    * displacement, velocity and acceleration interpolated from the FE field (which still lives
    * in the converted cells); the FE zone drops the DoFs of the converted cells; the caller
@@ -75,12 +76,11 @@ namespace PeriArlequin
     /**
      * The growth that subsection "Adaptive PD zone" asks for, or nullptr (Conversion
      * criterion = none). A clear error if the case cannot grow its PD zone (the zones are not
-     * coupled across a band, or the mesh is a Gmsh file).
+     * coupled across a band).
      */
     static std::unique_ptr<PDZoneGrowth<dim>>
     create(ParameterHandler                    &prm,
            const Parameters::Coupling          &coupling,
-           const Parameters::Geometry          &geometry,
            const Parameters::Peridynamics<dim> &pd_parameters);
 
     /** A growth that converts the cells any of @p criteria flags. */
@@ -173,10 +173,11 @@ namespace PeriArlequin
   private:
     /**
      * The cells that are FE now and flagged by a criterion, near @p new_damage or in the
-     * lead (no nearer than @p band_width to the boundary), as boxes, gathered from all ranks.
+     * lead (no nearer than @p band_width to the boundary), gathered from all ranks: as boxes
+     * on a box mesh, as cells on a general one.
      */
-    std::vector<Box<dim>>
-    flagged_boxes(const FEZone<dim>      &fe_zone,
+    Region<dim>
+    flagged_cells(const FEZone<dim>      &fe_zone,
                   const PDZone<dim>      &pd_zone,
                   std::vector<Point<dim>> new_damage,
                   const double            band_width) const;

@@ -1,6 +1,7 @@
 #ifndef periarlequin_base_regions_h
 #define periarlequin_base_regions_h
 
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/point.h>
 
 #include <array>
@@ -38,22 +39,73 @@ namespace PeriArlequin
   };
 
   /**
-   * A union of boxes, written in a parameter file as "x0, y0 : x1, y1 ; x0, y0 : x1, y1"
-   * (lower and upper corner of each box, boxes separated by ';'). Empty text is the empty set.
+   * The shape of a mesh cell with straight edges (a quadrilateral, a hexahedron), given by its
+   * vertices in deal.II's order: a PD region grown on a general mesh is a union of cells, which
+   * boxes cannot describe. Its inside is the union of the simplices that join the cell's
+   * centre to its faces, a face of a hexahedron split into four triangles about the face's
+   * centre, so two cells split the face they share alike, flat or not, and leave no gap.
+   */
+  template <int dim>
+  struct CellShape
+  {
+    std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> vertices;
+
+    /** Is @p p inside, or within @p tolerance [m] of the cell? */
+    bool
+    contains(const Point<dim> &p, const double tolerance = 0.) const;
+
+    /** Euclidean distance from @p p to the cell (0 inside). */
+    double
+    distance(const Point<dim> &p) const;
+
+    /** The smallest box that holds the cell. */
+    Box<dim>
+    bounding_box() const;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &vertices;
+    }
+  };
+
+  /**
+   * A union of boxes, and of mesh cells where the region grew on a general mesh. Boxes are written
+   * in a parameter file as "x0, y0 : x1, y1 ; x0, y0 : x1, y1" (lower and upper corner of each box,
+   * boxes separated by ';'). Empty text is the empty set.
    */
   template <int dim>
   struct Region
   {
     std::vector<Box<dim>> boxes;
+    /** Cells of a general mesh that joined the region (none on a box mesh). */
+    std::vector<CellShape<dim>> cells;
 
     bool
     contains(const Point<dim> &p, const double tolerance = 0.) const;
     bool
     empty() const;
 
-    /** Euclidean distance from @p p to the nearest box (0 inside; infinity if empty). */
+    /** Euclidean distance from @p p to the nearest box or cell (0 inside; infinity if empty). */
     double
     distance(const Point<dim> &p) const;
+
+    /** The boxes and the cells, counted as pieces. */
+    std::size_t
+    n_pieces() const;
+
+    /** The bounds of every piece: the boxes, then the cells' bounding boxes. */
+    std::vector<Box<dim>>
+    piece_bounds() const;
+
+    /** Distance from @p p to piece @p k (in the order of piece_bounds()). */
+    double
+    piece_distance(const std::size_t k, const Point<dim> &p) const;
+
+    /** Add the boxes and cells of @p other (the union). */
+    void
+    add(const Region<dim> &other);
 
     /**
      * Merge boxes that share a whole face (within @p tolerance [m]), axis by axis, so that a
@@ -63,12 +115,12 @@ namespace PeriArlequin
     void
     coalesce(const double tolerance);
 
-    /** The boxes, for a checkpoint. */
+    /** The boxes and cells, for a checkpoint. */
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &boxes;
+      archive &boxes &cells;
     }
 
     /** Parse the text of @p parameter (named in errors) into a region. */
@@ -77,10 +129,11 @@ namespace PeriArlequin
   };
 
   /**
-   * Distances to a region of many boxes (a zone grown cell by cell keeps hundreds) at the cost
-   * of the boxes near the point: the boxes are binned on a uniform grid over their bounding
-   * box, and a query visits rings of bins around the point until no box left unvisited can be
-   * nearer. The result is Region::distance(), to the bit: the same minimum of the same terms.
+   * Distances to a region of many pieces (a zone grown cell by cell keeps hundreds) at the cost
+   * of the pieces near the point: the pieces' bounds are binned on a uniform grid over their
+   * hull, and a query visits rings of bins around the point until no piece left unvisited can
+   * be nearer (a piece is no nearer than its bounds). The result is Region::distance(), to the
+   * bit: the same minimum of the same terms.
    */
   template <int dim>
   class RegionDistance
@@ -91,20 +144,22 @@ namespace PeriArlequin
 
     explicit RegionDistance(const Region<dim> &region);
 
-    /** Euclidean distance from @p p to the nearest box (0 inside; infinity if empty). */
+    /** Euclidean distance from @p p to the nearest box or cell (0 inside; infinity if empty). */
     double
     distance(const Point<dim> &p) const;
 
   private:
-    /** The region (its boxes are scanned where the grid does not help). */
+    /** The region (its pieces are scanned where the grid does not help). */
     Region<dim> region;
+    /** Its number of pieces. */
+    std::size_t n_pieces = 0;
     /** The grid: its lower corner, bin width and bins per axis (none for a few boxes). */
     Point<dim>                    origin;
     double                        bin_width = 0;
     std::array<unsigned int, dim> n_bins{};
-    /** The boxes touching bin b are bin_boxes[bin_begin[b], bin_begin[b + 1]). */
+    /** The pieces touching bin b are bin_pieces[bin_begin[b], bin_begin[b + 1]). */
     std::vector<unsigned int> bin_begin;
-    std::vector<unsigned int> bin_boxes;
+    std::vector<unsigned int> bin_pieces;
   };
 
   /** Parse a segment "x0, y0 : x1, y1" (its two end points) from the text of @p parameter. */

@@ -138,11 +138,12 @@ namespace PeriArlequin
     is_band() const;
 
     /**
-     * Add @p boxes to the pure PD region; the band of the overlap moves outward with it.
+     * Add @p converted (boxes, or cells of a general mesh) to the pure PD region; the band of
+     * the overlap moves outward with it.
      * Only for a band.
      */
     void
-    add_to_pd_region(const std::vector<Box<dim>> &boxes);
+    add_to_pd_region(const Region<dim> &converted);
     /**
      * Make the pure PD region @p grown, a region that add_to_pd_region() reached in an
      * earlier run (a checkpoint). Only for a band.
@@ -157,7 +158,7 @@ namespace PeriArlequin
     std::string overlap_text, fe_region_text;
     /** Width of the band (0: the overlap and FE regions are boxes) [m]. */
     double band_width;
-    /** Distances to pure_pd (a grown region has many boxes). */
+    /** Distances to pure_pd (a grown region has many pieces). */
     RegionDistance<dim> distance_to_pure_pd;
     /** Tolerance for merging the boxes of the PD region [m] (set by check_against_mesh()). */
     double length_tolerance = 0;

@@ -123,6 +123,13 @@ namespace PeriArlequin
     get_region() const;
 
     /**
+     * Are the cells general quadrilaterals or hexahedra (Geometry/Mesh file)? Then the cells
+     * that join the region do so as cells, since boxes would not follow them.
+     */
+    bool
+    has_general_cells() const;
+
+    /**
      * Particles, ghosts, bonds, pre-cracks, model, initial state (without accelerations:
      * the integrator computes them once the coupling has set the slaves). @p data must
      * outlive the zone.

@@ -22,7 +22,7 @@ namespace PeriArlequin
   template <int dim>
   struct Simulator<dim>::CheckpointRecord
   {
-    std::string              format    = "PeriArlequin checkpoint 3";
+    std::string              format    = "PeriArlequin checkpoint 4";
     unsigned int             dimension = dim;
     std::vector<std::string> parameters;
     unsigned int             n_ranks = 0;
