@@ -189,19 +189,23 @@ for part in $parts; do
           "$run/solution_energy.csv"
       done
       echo
-      echo "Crack tips (x, y) [mm] of the four branches, sorted by x then y:"
+      echo "Crack tips (x, y) [mm] of the branches, in the order of their text:"
       for run in $runs; do
         awk -F, -v run="$run" '
           NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
           $1 == 250 || $1 == 300 || $1 == 350 || $1 == 400 {
-            line = ""
+            n = 0
             for (b = 0; b < 4; ++b)
               if ($col["branch_" b "_x"] != "nan")
-                tips[b] = sprintf("(%.1f, %.1f)", 1e3 * $col["branch_" b "_x"], 1e3 * $col["branch_" b "_y"])
-              else
-                tips[b] = ""
-            n = asort(tips)
-            for (b = 1; b <= n; ++b) if (tips[b] != "") line = line " " tips[b]
+                {
+                  tip = sprintf("(%.1f, %.1f)", 1e3 * $col["branch_" b "_x"], 1e3 * $col["branch_" b "_y"])
+                  for (k = n++; k > 0 && tips[k - 1] > tip; --k)
+                    tips[k] = tips[k - 1]
+                  tips[k] = tip
+                }
+            line = ""
+            for (k = 0; k < n; ++k)
+              line = line " " tips[k]
             printf "%s at %.0f us:%s\n", run, 1e6 * $col["time"], line
           }' "$run/solution_energy.csv"
       done
