@@ -3,7 +3,8 @@
 # "cracks") from its output directory (Debian: gnuplot-nox):
 #   scripts/plot_zone.sh <output directory> [<step> ...]
 # writes <dir>/zone_<step>.png for each step given (default: every written step): the pure PD
-# region (shaded boxes) with the damaged particles of the same step on top, and
+# region (shaded boxes, and on a 2D Gmsh mesh the converted cells) with the damaged particles
+# of the same step on top, and
 # <dir>/zone_size.png, the PD particles and FE DoFs against time.
 set -euo pipefail
 dir=${1:?usage: plot_zone.sh <output directory> [<step> ...]}
@@ -30,6 +31,13 @@ for step in "${steps[@]}"; do
     fi
     echo "set title 'pure PD region (shaded) and damage > 0.35 at $(head -1 "$region" | sed 's/^# //')'"
     plot="plot '$region' skip 2 using (\$1+\$3)/2:(\$2+\$4)/2:1:3:2:4 with boxxyerror fs solid 0.25 lc rgb '#4575b4' title 'PD region'"
+    cells=$(ls "$dir"/*_pd_cells_"$step".csv 2> /dev/null || true)
+    if [ -n "$cells" ]; then
+      # Each cell a closed polygon (vertices 0, 1, 3, 2 in deal.II's order), blank-line separated.
+      awk -F, 'NR > 1 { printf "%s,%s\n%s,%s\n%s,%s\n%s,%s\n%s,%s\n\n", $1, $2, $3, $4, $7, $8, $5, $6, $1, $2 }' \
+        "$cells" > "$dir/zone_cells_$step.csv"
+      plot="$plot, '$dir/zone_cells_$step.csv' using 1:2 with filledcurves closed fs solid 0.25 lc rgb '#4575b4' notitle"
+    fi
     if [ -n "$map" ]; then
       plot="$plot, '$map' skip 2 using 1:(\$3 > 0.35 ? \$2 : 1/0) with points pt 5 ps 0.2 lc rgb '#b2182b' title 'cracked'"
     fi

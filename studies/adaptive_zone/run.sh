@@ -209,8 +209,15 @@ for part in $parts; do
             printf "%s at %.0f us:%s\n", run, 1e6 * $col["time"], line
           }' "$run/solution_energy.csv"
       done
+      for step in 300 400; do
+        "$top/scripts/plot_zone.sh" damage_distance "$step" > /dev/null
+        gnuplot -e "set datafile separator ','; set terminal pngcairo size 900,900 noenhanced;
+          set output 'pd/damage_$step.png'; set size ratio -1; set xrange [0:0.1]; set yrange [0:0.05];
+          set title 'pure PD, damage > 0.35, step $step'; set xlabel 'x [m]'; set ylabel 'y [m]';
+          plot 'pd/solution_damage_$(printf %06d "$step").csv' skip 2 using 1:(\$3 > 0.35 ? \$2 : 1/0) with points pt 5 ps 0.2 lc rgb '#b2182b' notitle"
+      done
       cd "$top"
-      echo "wrote the Gmsh runs to $work/gmsh" ;;
+      echo "wrote the Gmsh runs and figures to $work/gmsh" ;;
     *) echo "unknown part $part" >&2; exit 1 ;;
   esac
 done
