@@ -175,7 +175,7 @@ namespace
             Tensor<1, dim> xi;
             for (unsigned int d = 0; d < dim; ++d)
               xi[d] = around(random);
-            const Point<dim> p        = corner + A * xi;
+            const Point<dim>     p    = corner + A * xi;
             const Tensor<1, dim> back = inverse * (p - corner);
             bool                 in = true, out = false;
             for (unsigned int d = 0; d < dim; ++d)

@@ -60,8 +60,9 @@ namespace
            "subsection Time\n  set Time step = 2e-7\n  set End time = 1e-6\nend\n"
            "subsection Initial conditions\nsubsection function\n"
            "  subsection Displacement\n    set Function expression = " +
-           displacement + "\n  end\n  subsection Velocity\n    set Function expression = " +
-           velocity + "\n  end\nend\nend\n" + quiet_output();
+           displacement +
+           "\n  end\n  subsection Velocity\n    set Function expression = " + velocity +
+           "\n  end\nend\nend\n" + quiet_output();
   }
 
   double
@@ -84,8 +85,8 @@ namespace
         if (pd->is_slave(i))
           slave_mass += pd->particle_mass(i);
       }
-    pd_mass    = Utilities::MPI::sum(pd_mass, MPI_COMM_WORLD);
-    slave_mass = Utilities::MPI::sum(slave_mass, MPI_COMM_WORLD);
+    pd_mass              = Utilities::MPI::sum(pd_mass, MPI_COMM_WORLD);
+    slave_mass           = Utilities::MPI::sum(slave_mass, MPI_COMM_WORLD);
     const double fe_mass = simulator.get_fe_zone().linear_momentum()[0] - slave_mass;
     return {fe_mass / density, pd_mass / density};
   }
@@ -144,7 +145,8 @@ main(int argc, char **argv)
         double      worst = 0;
         for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
           {
-            const Tensor<1, 3> exact_u({1e-7 * (strain.name[0] == 'u' ? x[i][0] : x[i][1]), 0., 0.});
+            const Tensor<1, 3> exact_u(
+              {1e-7 * (strain.name[0] == 'u' ? x[i][0] : x[i][1]), 0., 0.});
             worst = std::max(worst, (u[i] - exact_u).norm());
           }
         check_below(strain.name + ": max |u_I - u(x_I)| / eps",

@@ -51,9 +51,8 @@ namespace
   bool
   pd_cell(const Point<dim> &c)
   {
-    const bool original = dim == 2 ?
-                            c[0] > 0.035 && c[0] < 0.065 && c[1] > 0.01 && c[1] < 0.04 :
-                            c[0] > 0.012 && c[0] < 0.028 && c[1] > 0.005 && c[1] < 0.015;
+    const bool original = dim == 2 ? c[0] > 0.035 && c[0] < 0.065 && c[1] > 0.01 && c[1] < 0.04 :
+                                     c[0] > 0.012 && c[0] < 0.028 && c[1] > 0.005 && c[1] < 0.015;
     return original || in_flagged_box(c);
   }
 
@@ -147,10 +146,10 @@ namespace
       return simulator->get_fe_zone().linear_momentum() +
              simulator->get_pd_zone()->linear_momentum();
     };
-    const Tensor<1, dim> before        = momentum();
-    const unsigned int   converted     = simulator->grow_pd_zone();
-    const auto          &triangulation = simulator->get_fe_zone().get_dof_handler().get_triangulation();
-    unsigned int         expected      = 0;
+    const Tensor<1, dim> before    = momentum();
+    const unsigned int   converted = simulator->grow_pd_zone();
+    const auto  &triangulation     = simulator->get_fe_zone().get_dof_handler().get_triangulation();
+    unsigned int expected          = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && in_flagged_box(cell->center()))
         ++expected;
@@ -173,7 +172,9 @@ namespace
         mismatches += in_pd != (alpha[i] == 0);
         in_pd_cells += in_pd;
       }
-    check_above(name + "particles in PD cells", Utilities::MPI::sum(in_pd_cells, MPI_COMM_WORLD), 0.5);
+    check_above(name + "particles in PD cells",
+                Utilities::MPI::sum(in_pd_cells, MPI_COMM_WORLD),
+                0.5);
     check(name + "particles with alpha = 0 not in a PD cell, or in one with alpha > 0",
           Utilities::MPI::sum(mismatches, MPI_COMM_WORLD),
           0,
@@ -194,8 +195,9 @@ main(int argc, char **argv)
     for (const std::string velocity : {"3; -2; 1", "3 + sin(40*x); -2 + cos(30*y); 1 + sin(50*z)"})
       convert_at_rest<3>(velocity);
 
-    const std::string running = plate_text(
-      "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\nend\n", 2e-5);
+    const std::string running =
+      plate_text("subsection Adaptive PD zone\n  set Conversion criterion = damage distance\nend\n",
+                 2e-5);
     auto plate = make_simulator<2>(running, MPI_COMM_WORLD);
     plate->run();
     const auto &history = plate->get_energy_history();
