@@ -15,6 +15,16 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  Point<dim>
+  Lattice<dim>::upper_corner() const
+  {
+    Point<dim> upper = origin;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] += n_sites[d] * dx;
+    return upper;
+  }
+
+  template <int dim>
   types::particle_index
   Lattice<dim>::id(const Site &site) const
   {

@@ -301,16 +301,19 @@ namespace PeriArlequin
   void
   PDZone<dim>::find_boundary_layers()
   {
-    // The first layer of lattice sites along a face lies within dx of it, whatever the
-    // alignment of the lattice with the face: it carries a traction. A displacement is
-    // prescribed on every particle within two bond reaches (delta + dx/2) of the face (slaves
-    // follow the FE nodes instead): the free particles and all their neighbours then have
-    // complete families, so the dilatations that enter a free particle's force are those of
+    // The first layer of lattice sites along a face carries a traction: the sites within dx
+    // of the face of the lattice's cells (at an upper face that is the domain's face less
+    // the strip no whole cell fills where dx does not divide the domain; measured from the
+    // domain's face, that layer lies up to 1.5 dx away and a traction there was lost). A
+    // displacement is prescribed on every particle within two bond reaches (delta + dx/2) of the
+    // face (slaves follow the FE nodes instead): the free particles and all their neighbours then
+    // have complete families, so the dilatations that enter a free particle's force are those of
     // the bulk and no free particle feels the surface; the layer is the fictitious boundary
     // layer, inside the domain.
-    const double dx    = parameters.lattice_spacing;
-    const double depth = 2. * (parameters.horizon() + 0.5 * dx);
-    const auto   x     = ghosts.reference_positions();
+    const double     dx            = parameters.lattice_spacing;
+    const double     depth         = 2. * (parameters.horizon() + 0.5 * dx);
+    const auto       x             = ghosts.reference_positions();
+    const Point<dim> lattice_upper = lattice.upper_corner();
     traction_faces.assign(ghosts.n_owned(), 0);
     if (general_cells)
       {
@@ -328,7 +331,9 @@ namespace PeriArlequin
           {
             const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
                                                    domain.upper[direction] - x[i][direction];
-            if (condition.type == BoundaryType::traction && distance < dx * (1. - 1e-12))
+            const double from_lattice_face =
+              (b % 2 == 0) ? distance : lattice_upper[direction] - x[i][direction];
+            if (condition.type == BoundaryType::traction && from_lattice_face < dx * (1. - 1e-12))
               traction_faces[i] |= (1u << b);
             else if (condition.type == BoundaryType::displacement && !slave[i] &&
                      distance < depth * (1. - 1e-12))

@@ -6,8 +6,11 @@
 # <work>/mixed_mode), and the zone figures of the shipped case
 # parameter_files/adaptive_crack_branching_2d.prm (scripts/plot_zone.sh, into <work>/zone):
 #   studies/adaptive_zone/run.sh <build directory> <work directory> [<mpi ranks>] [<parts>]
-# <parts> (default: all): branching, kink, figures, impact, spall, gmsh. About 40 minutes for
-# branching, 50 for kink, 2 for impact, 1 for spall and 1 for gmsh on one core. impact: the impact-driven
+# <parts> (default: all but 3d): branching, kink, figures, impact, spall, gmsh, 3d. About 40
+# minutes for branching, 50 for kink, 2 for impact, 1 for spall and 1 for gmsh on one core;
+# 3d: the 3D plate of plate_3d.prm (1.1 million particles in pure PD, 2 GB) as pure PD and
+# adaptive from PD around the notch tip, each once, on <mpi ranks> ranks of one thread (two
+# ranks: about 15 minutes); prints the table of the README and draws the damage maps. impact: the impact-driven
 # mode II plate of impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with
 # the strain criterion added; checked every 50 steps), one thread each, one after the other;
 # prints the table of the README and draws the damage maps (into <work>/impact). spall: the
@@ -218,6 +221,50 @@ for part in $parts; do
       done
       cd "$top"
       echo "wrote the Gmsh runs and figures to $work/gmsh" ;;
+    3d)
+      mkdir -p "$work/3d"
+      cd "$work/3d"
+      for run in pd damage_distance; do
+        {
+          echo "include $here/plate_3d.prm"
+          [ $run = damage_distance ] && adaptive_lines "0, 0.02, 0 : 0.04, 0.03, 0.01" "damage distance"
+          echo "subsection Output"
+          echo "  set Directory = $work/3d/$run"
+          echo "end"
+        } > "$run.prm"
+        DEAL_II_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" \
+          "$build/periarlequin" "$run.prm" > "$run.log" 2>&1
+      done
+      echo "| run | set-up [s] | time loop [s] | growth [s] | PD particles at 0 / 12 / 24 / 36 µs | broken-bond energy at 12 / 24 / 36 µs [J] | leading tip x at 12 / 24 / 36 µs [mm] |"
+      echo "|---|---|---|---|---|---|---|"
+      for run in pd damage_distance; do
+        setup=$(awk -F'|' '$2 ~ /^ *setup *$/ { gsub(/[ s]/, "", $4); print $4 }' "$run.log")
+        loop=$(sed -n 's/^Time loop: .* in \([0-9.e+-]*\) s.*/\1/p' "$run.log")
+        growth=$(awk -F'|' '$2 ~ /^ *PD zone growth/ { gsub(/[ s]/, "", $4); print $4 }' "$run.log")
+        awk -F, -v run="$run" -v setup="$setup" -v loop="$loop" -v growth="${growth:-0}" '
+          NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+          { lead = 0
+            for (b = 0; b < 4; ++b)
+              if ($col["branch_" b "_x"] != "nan" && $col["branch_" b "_x"] > lead) lead = $col["branch_" b "_x"] }
+          $1 == 0 || $1 == 120 || $1 == 240 || $1 == 360 { particles = particles (particles == "" ? "" : " / ") $col["pd_particles"] }
+          $1 == 120 || $1 == 240 || $1 == 360 {
+            energy = energy (energy == "" ? "" : " / ") sprintf("%.4f", $col["broken_bond_energy"])
+            tips = tips (tips == "" ? "" : " / ") sprintf("%.1f", 1e3 * lead) }
+          END { printf "| %s | %s | %s | %s | %s | %s | %s |\n", run, setup, loop, growth, particles, energy, tips }' \
+          "$run/solution_energy.csv"
+      done
+      for run in pd damage_distance; do
+        for map in "$run"/solution_damage_*.csv; do
+          step=${map##*_}
+          step=${step%.csv}
+          gnuplot -e "set datafile separator ','; set terminal pngcairo size 900,600 noenhanced;
+            set output '$run/damage_$step.png'; set size ratio -1; set xrange [0:0.1]; set yrange [0:0.05];
+            set title '$run, damage > 0.35 (all z), step $((10#$step))'; set xlabel 'x [m]'; set ylabel 'y [m]';
+            plot '$map' skip 2 using 1:(\$4 > 0.35 ? \$2 : 1/0) with points pt 5 ps 0.2 lc rgb '#b2182b' notitle"
+        done
+      done
+      cd "$top"
+      echo "wrote the 3D runs and figures to $work/3d" ;;
     *) echo "unknown part $part" >&2; exit 1 ;;
   esac
 done

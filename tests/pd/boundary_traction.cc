@@ -8,8 +8,12 @@
 // coupling forces cancel on a rigid translation), with a PD strip 0.04 <= x <= 0.06,
 // overlaps 0.02 wide on both sides and FE beyond, so the top face crosses every zone and
 // its traction is shared as alpha (FE) and 1 - alpha (PD): FE momentum (lumped masses,
-// the slaves' included) plus that of the free particles. Tolerance 1e-10 relative: the
-// sums of some ten thousand terms in double precision over 50 steps.
+// the slaves' included) plus that of the free particles. And pure PD on a plate that dx does
+// not divide, [0, 0.1005] x [0, 0.0408]: the lattice fills [0, 0.1] x [0, 0.04] (100 x 40
+// cells; the PD body is the lattice's cells), its top and right layers lie 1.3 and 1.0 dx
+// from the domain's faces, and they carry the tractions all the same: F as above (the
+// traction over the faces of the lattice's cells). Tolerance 1e-10 relative: the sums of
+// some ten thousand terms in double precision over 50 steps.
 
 #include "../tests.h"
 
@@ -19,17 +23,19 @@ using namespace PeriArlequin;
 namespace
 {
   std::string
-  plate(const bool coupled)
+  plate(const bool coupled, const bool dx_divides = true)
   {
     std::string text =
       "set Dimension = 2\n"
-      "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
-      "  set Subdivisions = 20, 8\nend\n"
+      "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " +
+      std::string(dx_divides ? "0.1, 0.04" : "0.1005, 0.0408") +
+      "\n  set Subdivisions = 20, 8\nend\n"
       "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
       "  set Density = 2700\nend\n"
       "subsection Peridynamics\n  set Lattice spacing = 1e-3\n  set Horizon factor = 3.015\n"
       "  set Region = " +
-      std::string(coupled ? "0.04, 0 : 0.06, 0.04" : "0, 0 : 0.1, 0.04") +
+      std::string(coupled ? "0.04, 0 : 0.06, 0.04" :
+                            (dx_divides ? "0, 0 : 0.1, 0.04" : "0, 0 : 0.1005, 0.0408")) +
       "\nend\n"
       "subsection Boundary conditions\n"
       "  subsection Boundary 1\n    set Type = traction\n"
@@ -79,5 +85,10 @@ main(int argc, char **argv)
                     std::abs(momentum_y(*simulator) / expected - 1.),
                     1e-10);
       }
+    auto simulator = make_simulator<2>(plate(false, false));
+    simulator->run();
+    check_below("pure PD, dx not dividing the plate: |y momentum / (F t) - 1|",
+                std::abs(momentum_y(*simulator) / (force * simulator->get_time()) - 1.),
+                1e-10);
   });
 }

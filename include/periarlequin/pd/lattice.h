@@ -62,6 +62,13 @@ namespace PeriArlequin
     std::vector<std::pair<types::particle_index, double>>
     interpolation_weights(const Point<dim> &x) const;
 
+    /**
+     * The upper corner of the lattice's cells: the domain's, less the strip along an upper
+     * face that a whole lattice cell does not fill (where dx does not divide the domain).
+     */
+    Point<dim>
+    upper_corner() const;
+
   private:
     Point<dim> origin;
     double     dx;
