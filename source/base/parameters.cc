@@ -46,7 +46,8 @@ namespace PeriArlequin
                   "Boundary <id>, larger ids are free. Lower corner, Upper corner and "
                   "Subdivisions are then not used (the PD lattice is anchored at the mesh's "
                   "bounding box). The PD region's boxes must follow cell faces (mesh them as "
-                  "surfaces of their own).");
+                  "surfaces of their own); an adaptive PD zone grows from them by whole "
+                  "cells.");
       entries.add("Lower corner",
                   lower_corner,
                   Patterns::List(Patterns::Double(), 2, 3),
