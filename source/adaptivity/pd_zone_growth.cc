@@ -1,4 +1,5 @@
 #include <periarlequin/adaptivity/pd_zone_growth.h>
+#include <periarlequin/base/gather.h>
 #include <periarlequin/coupling/interpolation_operator.h>
 
 #include <deal.II/base/mpi.h>
@@ -200,6 +201,36 @@ namespace PeriArlequin
               boundary_vertices.push_back(face->vertex(v));
     boundary_vertices = internal::gather_points(boundary_vertices, pd_zone.get_communicator());
     sort_and_unique(boundary_vertices);
+
+    loaded_faces.clear();
+    if (pd_zone.has_general_cells())
+      {
+        std::vector<Point<dim>> centres;
+        std::vector<double>     radii;
+        for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && context.loaded_boundaries.count(face->boundary_id()))
+                {
+                  centres.push_back(face->center());
+                  radii.push_back(0.5 * face->diameter());
+                }
+        const MPI_Comm communicator = pd_zone.get_communicator();
+        centres                     = internal::gather_points(centres, communicator);
+        radii                       = gather_values(radii, communicator);
+        for (unsigned int f = 0; f < centres.size(); ++f)
+          loaded_faces.emplace_back(centres[f], radii[f]);
+        if (!loaded_faces.empty())
+          {
+            std::ostringstream note;
+            note << "on a mesh file the PD zone carries no traction or displacement: the "
+                    "cells within the overlap width and two bond reaches ("
+                 << particle_reach
+                 << " m) of a loaded boundary stay FE, and a crack that runs there stops "
+                    "the run at the overlap.";
+            notes.push_back(note.str());
+          }
+      }
   }
 
   template <int dim>
@@ -266,6 +297,22 @@ namespace PeriArlequin
       internal::mark_cells_near(fe_zone, new_damage, context.conversion_distance(), convert);
     if (context.lead_distance > 0)
       add_lead(fe_zone, pd_zone, band_width, convert);
+    // The cell's box nearer than the clearance to a face's centre less its half diameter:
+    // a lower bound of the distance to the face, so no kept cell is too close.
+    const double clearance = band_width + particle_reach;
+    if (!loaded_faces.empty())
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && convert[cell->active_cell_index()])
+          {
+            const auto     corners = cell->bounding_box().get_boundary_points();
+            const Box<dim> box{corners.first, corners.second};
+            for (const auto &[centre, radius] : loaded_faces)
+              if (box.distance(centre) - radius < clearance)
+                {
+                  convert[cell->active_cell_index()] = false;
+                  break;
+                }
+          }
     // Each converted cell as its vertices.
     std::vector<Point<dim>> local_vertices;
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -174,7 +174,8 @@ namespace PeriArlequin
     /**
      * The cells that are FE now and flagged by a criterion, near @p new_damage or in the
      * lead (no nearer than @p band_width to the boundary), gathered from all ranks: as boxes
-     * on a box mesh, as cells on a general one.
+     * on a box mesh, as cells on a general one. On a general mesh, cells nearer to a loaded
+     * face than @p band_width and the particle reach stay FE (see loaded_faces).
      */
     Region<dim>
     flagged_cells(const FEZone<dim>      &fe_zone,
@@ -216,6 +217,12 @@ namespace PeriArlequin
     std::vector<Point<dim>> running_damage;
     /** The vertices of the boundary faces of the mesh (all ranks), for the lead. */
     std::vector<Point<dim>> boundary_vertices;
+    /**
+     * On a general mesh, the boundary faces that carry a traction or a displacement (all
+     * ranks), as their centres and half diameters: there the PD zone carries no boundary
+     * condition, so its non-slave particles must stay two bond reaches away from them.
+     */
+    std::vector<std::pair<Point<dim>, double>> loaded_faces;
     /** The size of running_damage after its duplicates were last removed. */
     std::size_t  running_damage_compacted = 0;
     unsigned int converted_cells          = 0;
