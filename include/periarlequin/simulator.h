@@ -14,6 +14,7 @@
 #include <periarlequin/io/pd_output.h>
 #include <periarlequin/pd/pd_zone.h>
 #include <periarlequin/postprocess/postprocessor.h>
+#include <periarlequin/time/dynamic_relaxation.h>
 #include <periarlequin/time/predictor_corrector.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -94,6 +95,15 @@ namespace PeriArlequin
     /** setup() if not done yet, then output files and the time loop to the end time. */
     void
     run();
+
+    /**
+     * The static equilibrium under the loads of the current time (dynamic relaxation, bonds
+     * do not break), left at rest; run() calls it first with Time/Integration = static then
+     * explicit. Prints the iterations and the residual reached; throws if it does not
+     * converge.
+     */
+    typename DynamicRelaxation<dim>::Result
+    solve_static();
 
     /**
      * One step of the time integrator from the current state, then grow_pd_zone() and
@@ -311,8 +321,11 @@ namespace PeriArlequin
     Parameters::Material       material;
     Parameters::FiniteElements fe_parameters;
     Parameters::Time           time_parameters;
-    Parameters::Output         output_parameters;
-    Parameters::Checkpoint     checkpoint_parameters;
+    Parameters::StaticSolve    static_parameters;
+    /** Has the static solve of Time/Integration run? */
+    bool                   static_solved = false;
+    Parameters::Output     output_parameters;
+    Parameters::Checkpoint checkpoint_parameters;
     /** The parameters a checkpoint must agree with (checkpointed_parameters()). */
     std::vector<std::string> physics_parameters;
     /** What a checkpoint holds besides the cell data; set while resuming from one. */

@@ -210,6 +210,15 @@ namespace PeriArlequin
     void
     Time::entries(ParameterEntries &entries)
     {
+      entries.add("Integration",
+                  integration,
+                  integration_names,
+                  "explicit: the explicit loop from the initial conditions. static then "
+                  "explicit: first the static equilibrium under the loads and prescribed "
+                  "displacements of t = 0 (dynamic relaxation, see subsection Static solve; "
+                  "bonds do not break in it), then the explicit loop from it at rest: a body "
+                  "that stores elastic energy before the dynamics starts. The energy history "
+                  "then starts with the stored strain energy and no external work.");
       entries.add("Time step",
                   time_step,
                   Patterns::Double(),

@@ -286,6 +286,47 @@ namespace PeriArlequin
     tracks_work = tracks_work || contact != nullptr;
   }
 
+  template <int dim>
+  void
+  FEZone<dim>::scale_velocities(const double factor)
+  {
+    state.velocity *= factor;
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      state.velocity.local_element(prescribed[k].local_index) = prescribed_velocity[k];
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::displacement_inertia() const
+  {
+    double local = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      local += mass.local_element(i) * state.displacement.local_element(i) *
+               state.displacement.local_element(i);
+    return Utilities::MPI::sum(local, communicator);
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  FEZone<dim>::squared_force_norms() const
+  {
+    double sums[2] = {0, 0};
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      {
+        const double residual = mass.local_element(i) * state.acceleration.local_element(i);
+        sums[0] += residual * residual;
+        sums[1] += applied_force.local_element(i) * applied_force.local_element(i);
+      }
+    for (const auto &dof : prescribed)
+      {
+        const double residual =
+          mass.local_element(dof.local_index) * state.acceleration.local_element(dof.local_index);
+        sums[0] -= residual * residual;
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {std::max(sums[0], 0.), sums[1]};
+  }
+
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
 #define PERIARLEQUIN_INSTANTIATE(dim)                                                            \
   template void        FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);    \
@@ -308,8 +349,11 @@ namespace PeriArlequin
   template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);               \
   template void FEZone<dim>::set_contact(Contact<dim> *);                                        \
   template void FEZone<dim>::compute_forces(const double);                                       \
-  template FEZone<dim>::VectorType &FEZone<dim>::interface_forces();                             \
-  template FEZone<dim>::VectorType &FEZone<dim>::applied_forces();
+  template FEZone<dim>::VectorType  &FEZone<dim>::interface_forces();                            \
+  template FEZone<dim>::VectorType  &FEZone<dim>::applied_forces();                              \
+  template void                      FEZone<dim>::scale_velocities(const double);                \
+  template double                    FEZone<dim>::displacement_inertia() const;                  \
+  template std::pair<double, double> FEZone<dim>::squared_force_norms() const;
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

@@ -119,7 +119,7 @@ namespace PeriArlequin
     // displacements, and they stay current for the forces unless a bond broke on some rank
     // (a ghost's scalars change with bonds its own rank breaks).
     bool scalars_current = false;
-    if (fracture)
+    if (fracture && !fracture_suspended)
       {
         std::vector<StoredBond> broken;
         if (fracture->critical_stretch() > 0)
@@ -396,6 +396,57 @@ namespace PeriArlequin
   PDZone<dim>::external_work() const
   {
     return Utilities::MPI::sum(work, communicator);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::scale_velocities(const double factor)
+  {
+    const auto v = state.velocities();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      v[i] *= factor;
+    prescribed.restore_velocities(state);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::displacement_inertia() const
+  {
+    const auto u   = state.displacements();
+    double     sum = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (!slave[i])
+        sum += particle_mass(i) * (u[i] * u[i]);
+    return Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  PDZone<dim>::squared_force_norms() const
+  {
+    // A slave's force acts on the FE nodes, where the FE zone counts it.
+    const auto a        = state.accelerations();
+    double     sums[2]  = {0, 0};
+    const auto residual = [&](const unsigned int i) {
+      return slave[i] ? Tensor<1, dim>() : particle_mass(i) * a[i];
+    };
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        sums[0] += residual(i).norm_square();
+        sums[1] += applied_force[i].norm_square();
+      }
+    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
+      sums[0] -= residual(i)[d] * residual(i)[d];
+    });
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {std::max(sums[0], 0.), sums[1]};
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::suspend_fracture(const bool suspended)
+  {
+    fracture_suspended = suspended;
   }
 
   template class PDZone<2>;

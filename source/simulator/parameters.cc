@@ -55,6 +55,7 @@ namespace PeriArlequin
     Parameters::Material::declare_parameters(prm);
     Parameters::FiniteElements::declare_parameters(prm);
     Parameters::Time::declare_parameters(prm);
+    Parameters::StaticSolve::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);
     Parameters::Checkpoint::declare_parameters(prm);
     Parameters::Peridynamics<dim>::declare_parameters(prm);
@@ -87,6 +88,7 @@ namespace PeriArlequin
     material.parse_parameters(prm);
     fe_parameters.parse_parameters(prm);
     time_parameters.parse_parameters(prm);
+    static_parameters.parse_parameters(prm);
     output_parameters.parse_parameters(prm);
     checkpoint_parameters.parse_parameters(prm);
     physics_parameters = checkpointed_parameters(prm);
@@ -108,6 +110,12 @@ namespace PeriArlequin
     contact_model = contact_choice.model;
     if (contact_model != "none")
       contact = ContactRegistry<dim>::create(contact_model, prm);
+    if (contact_model != "none" &&
+        time_parameters.integration == Parameters::Integration::static_then_explicit)
+      throw_invalid_parameter("Time/Integration",
+                              "static then explicit",
+                              "explicit while a contact model is on (Contact/Model = " +
+                                contact_model + "): the static solve does not treat contact");
     prm.leave_subsection();
     zone_growth = PDZoneGrowth<dim>::create(prm, coupling_parameters, pd_parameters);
     prm.enter_subsection("Postprocess");

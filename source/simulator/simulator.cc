@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -20,6 +21,9 @@ namespace PeriArlequin
       return interval > 0 && (get_step_number() % interval == 0 || get_step_number() == n_steps);
     };
 
+    if (!resumed && !static_solved &&
+        time_parameters.integration == Parameters::Integration::static_then_explicit)
+      solve_static();
     if (resumed)
       restore_outputs();
     else
@@ -61,6 +65,46 @@ namespace PeriArlequin
     pcout << std::endl;
     if (output_parameters.print_timing)
       timer.print_wall_time_statistics(communicator);
+  }
+
+  template <int dim>
+  typename DynamicRelaxation<dim>::Result
+  Simulator<dim>::solve_static()
+  {
+    if (!setup_done)
+      setup();
+    TimerOutput::Scope scope(timer, "static solve");
+    if (pd_zone)
+      pd_zone->suspend_fracture(true);
+    DynamicRelaxation<dim> relaxation(static_parameters,
+                                      zones,
+                                      *integrator,
+                                      time_parameters.time_step);
+    Timer                  clock;
+    double                 last_report = 0;
+    const double           interval    = output_parameters.progress_interval;
+    const auto result = relaxation.solve([&](const unsigned int iteration, const double residual) {
+      // Rank 0's clock decides for all, as for the progress of the time loop.
+      const double wall = Utilities::MPI::broadcast(communicator, clock.wall_time(), 0);
+      if (interval > 0 && wall - last_report >= interval)
+        {
+          last_report = wall;
+          pcout << "  static solve: iteration " << iteration << ", |M a| / |F| = " << residual
+                << ", wall " << std::fixed << std::setprecision(1) << wall << " s"
+                << std::defaultfloat << std::setprecision(6) << std::endl;
+        }
+    });
+    if (pd_zone)
+      pd_zone->suspend_fracture(false);
+    static_solved        = true;
+    double strain_energy = 0;
+    for (const IntegratedZone *zone : zones)
+      strain_energy += zone->strain_energy();
+    pcout << "  static solve: equilibrium after " << result.iterations
+          << " iterations, |M a| / |F| = " << result.relative_residual << " (Static "
+          << "solve/Tolerance " << static_parameters.tolerance << "), strain energy "
+          << strain_energy << " J, " << clock.wall_time() << " s" << std::endl;
+    return result;
   }
 
   template <int dim>

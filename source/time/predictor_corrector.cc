@@ -49,13 +49,33 @@ namespace PeriArlequin
     const double dt = time.get_next_step_size();
     predict(dt);
     time.advance_time();
+    complete_step(dt);
+    account_work();
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::complete_step(const double dt)
+  {
     impose_prescribed_motion();
     slaves_follow_masters();
     compute_trial_accelerations();
     damp_fine_scale();
     compute_trial_velocities(dt);
     solve_multipliers_and_correct();
-    account_work();
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::relax(const double velocity_factor)
+  {
+    const double dt = time.get_next_step_size();
+    predict(dt);
+    complete_step(dt);
+    for (IntegratedZone *zone : zones)
+      zone->scale_velocities(velocity_factor);
+    if (coupling)
+      timed("coupling", [&] { coupling->set_slave_velocities(); });
   }
 
   template <int dim>

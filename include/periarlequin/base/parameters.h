@@ -295,10 +295,24 @@ namespace PeriArlequin
     };
 
     /** Explicit time stepping. */
+    /** How the time loop starts. */
+    enum class Integration
+    {
+      /** The explicit loop from the initial conditions. */
+      explicit_dynamics,
+      /** The static equilibrium under the loads of t = 0 first, then the explicit loop. */
+      static_then_explicit
+    };
+
+    inline const SelectionNames<Integration> integration_names = {
+      {"explicit", Integration::explicit_dynamics},
+      {"static then explicit", Integration::static_then_explicit}};
+
     struct Time
     {
-      double time_step = 1e-7;
-      double end_time  = 1e-5;
+      Integration integration = Integration::explicit_dynamics;
+      double      time_step   = 1e-7;
+      double      end_time    = 1e-5;
       /** Power iterations allowed for the estimate of the largest eigenvalue of M^-1 K. */
       unsigned int stability_iterations = 200;
 

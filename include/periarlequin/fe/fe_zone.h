@@ -166,6 +166,12 @@ namespace PeriArlequin
     linear_momentum() const;
     double
     external_work() const override;
+    void
+    scale_velocities(const double factor) override;
+    double
+    displacement_inertia() const override;
+    std::pair<double, double>
+    squared_force_norms() const override;
 
     const State &
     get_state() const;

@@ -182,6 +182,18 @@ namespace PeriArlequin
     /** Work of body forces and of the prescribed particles' reactions since the start. */
     double
     external_work() const override;
+    void
+    scale_velocities(const double factor) override;
+    double
+    displacement_inertia() const override;
+    std::pair<double, double>
+    squared_force_norms() const override;
+    /**
+     * Bonds do not break while @p suspended (a static solve under the loads of t = 0: the
+     * equilibrium it seeks is that of the intact body).
+     */
+    void
+    suspend_fracture(const bool suspended);
     types::particle_index
     n_global_particles() const;
     /** Family sizes summed over all particles (each bond counted from both ends). */
@@ -624,6 +636,8 @@ namespace PeriArlequin
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
     double                      work        = 0;
     bool                        tracks_work = false;
+    /** See suspend_fracture(). */
+    bool fracture_suspended = false;
   };
 } // namespace PeriArlequin
 

@@ -2,6 +2,7 @@
 #define periarlequin_time_integrated_zone_h
 
 #include <string>
+#include <utility>
 
 namespace PeriArlequin
 {
@@ -63,6 +64,23 @@ namespace PeriArlequin
     /** Work of loads and support reactions since the start [J]. */
     virtual double
     external_work() const = 0;
+
+    /**
+     * Dynamic relaxation: multiply the velocities of the nodes that are not prescribed by
+     * @p factor (the coupling's slaves follow after).
+     */
+    virtual void
+    scale_velocities(const double factor) = 0;
+    /** Sum of m |u|^2 over the nodes that carry mass: u^T M u for a Rayleigh quotient [kg m^2]. */
+    virtual double
+    displacement_inertia() const = 0;
+    /**
+     * For the convergence of a static solve, the squared norms of the out-of-balance force
+     * M a over the components that are not prescribed, and of the applied forces (loads and
+     * support reactions) over all [N^2] (collective).
+     */
+    virtual std::pair<double, double>
+    squared_force_norms() const = 0;
   };
 } // namespace PeriArlequin
 

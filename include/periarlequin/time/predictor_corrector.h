@@ -48,6 +48,16 @@ namespace PeriArlequin
     void
     step();
 
+    /**
+     * One step of dynamic relaxation: a step whose clock stays where it is (the loads and
+     * prescribed displacements of the current time), without work accounting, after which
+     * every velocity is multiplied by @p velocity_factor (the slaves follow): a viscous
+     * damping that keeps the coupling's velocity constraint, since both zones' velocities
+     * scale alike.
+     */
+    void
+    relax(const double velocity_factor);
+
     /** Current time and step number. */
     const DiscreteTime &
     get_time() const;
@@ -56,6 +66,12 @@ namespace PeriArlequin
     /** Eq. 58-59: displacements and half-step velocities of every node. */
     void
     predict(const double dt);
+    /**
+     * The parts of a step after the prediction, at the clock's current time: prescribed
+     * motion, slaves, trial accelerations and velocities, fine-scale damping, multipliers.
+     */
+    void
+    complete_step(const double dt);
     /** Prescribed nodes of every zone take their motion at the new time. */
     void
     impose_prescribed_motion();

@@ -1,0 +1,88 @@
+#ifndef periarlequin_time_dynamic_relaxation_h
+#define periarlequin_time_dynamic_relaxation_h
+
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/time/integrated_zone.h>
+#include <periarlequin/time/predictor_corrector.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <vector>
+
+namespace PeriArlequin
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    /** When a static solve has converged, and how long it may try. */
+    struct StaticSolve
+    {
+      double       tolerance      = 1e-6;
+      unsigned int max_iterations = 200000;
+
+      void
+      entries(ParameterEntries &entries);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
+  /**
+   * The static equilibrium of the coupled model under the loads of the current time, by
+   * adaptive dynamic relaxation: the explicit steps of the time loop (the same forces, the
+   * same coupling and multipliers) with the clock held, the velocities damped after each
+   * step by exp(-c dt). The damping c = 2 omega is critical for the frequency omega^2 =
+   * u^T K u / u^T M u = 2 U / u^T M u of the current displacement (Rayleigh's quotient, with
+   * the strain energy U of the blended model), so it follows the slowest mode as the
+   * deformation spreads through the body. Converged when the out-of-balance force |M a| of
+   * the free components falls below the tolerance times the norm of the applied forces
+   * (loads and support reactions).
+   */
+  template <int dim>
+  class DynamicRelaxation
+  {
+  public:
+    /** What a solve reached. */
+    struct Result
+    {
+      unsigned int iterations;
+      /** |M a| / |F_applied| at the end. */
+      double relative_residual;
+    };
+
+    /** Called every iteration with the iteration and the relative residual. */
+    using Progress = std::function<void(unsigned int, double)>;
+
+    DynamicRelaxation(const Parameters::StaticSolve       &parameters,
+                      const std::vector<IntegratedZone *> &zones,
+                      PredictorCorrector<dim>             &integrator,
+                      const double                         time_step);
+
+    /**
+     * Relax to equilibrium, then leave every velocity at zero. Throws if the tolerance is
+     * not reached within the allowed iterations, or if the residual grows without bound.
+     */
+    Result
+    solve(const Progress &progress);
+
+  private:
+    /** |M a| / |F_applied| over all zones (collective). */
+    double
+    relative_residual() const;
+    /** exp(-c dt) with c from Rayleigh's quotient of the current displacement (collective). */
+    double
+    velocity_factor() const;
+
+    const Parameters::StaticSolve parameters;
+    std::vector<IntegratedZone *> zones;
+    PredictorCorrector<dim>      &integrator;
+    const double                  time_step;
+  };
+} // namespace PeriArlequin
+
+#endif

@@ -1,0 +1,135 @@
+#include <periarlequin/time/dynamic_relaxation.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace PeriArlequin
+{
+  namespace Parameters
+  {
+    void
+    StaticSolve::entries(ParameterEntries &entries)
+    {
+      entries.add("Tolerance",
+                  tolerance,
+                  Patterns::Double(0),
+                  "Time/Integration = static then explicit: the static solve has converged "
+                  "when the out-of-balance force |M a| of the components that are not "
+                  "prescribed is at most this fraction of the norm of the applied forces "
+                  "(loads and support reactions); > 0 [-].");
+      entries.add("Maximum iterations",
+                  max_iterations,
+                  Patterns::Integer(1),
+                  "Relaxation steps allowed before the static solve gives up and says which "
+                  "residual it reached. A step costs about one explicit time step; the "
+                  "iterations needed grow with the body's size over the time step (several "
+                  "times the longitudinal wave's transit in steps) [-].");
+    }
+
+    void
+    StaticSolve::declare_parameters(ParameterHandler &prm)
+    {
+      ParameterEntries::declare<StaticSolve>(prm, "Static solve");
+    }
+
+    void
+    StaticSolve::parse_parameters(ParameterHandler &prm)
+    {
+      ParameterEntries::parse(prm, "Static solve", *this);
+      if (!(tolerance > 0))
+        throw_invalid_parameter("Static solve/Tolerance", tolerance, "a value > 0 [-]");
+    }
+  } // namespace Parameters
+
+  template <int dim>
+  DynamicRelaxation<dim>::DynamicRelaxation(const Parameters::StaticSolve       &parameters,
+                                            const std::vector<IntegratedZone *> &zones,
+                                            PredictorCorrector<dim>             &integrator,
+                                            const double                         time_step)
+    : parameters(parameters)
+    , zones(zones)
+    , integrator(integrator)
+    , time_step(time_step)
+  {}
+
+  template <int dim>
+  double
+  DynamicRelaxation<dim>::velocity_factor() const
+  {
+    double strain_energy = 0, inertia = 0;
+    for (const IntegratedZone *zone : zones)
+      {
+        strain_energy += zone->strain_energy();
+        inertia += zone->displacement_inertia();
+      }
+    if (!(inertia > 0) || !(strain_energy > 0))
+      return 1.;
+    const double omega = std::sqrt(2. * strain_energy / inertia);
+    return std::exp(-2. * omega * time_step);
+  }
+
+  template <int dim>
+  double
+  DynamicRelaxation<dim>::relative_residual() const
+  {
+    double residual = 0, applied = 0;
+    for (const IntegratedZone *zone : zones)
+      {
+        const auto [r, f] = zone->squared_force_norms();
+        residual += r;
+        applied += f;
+      }
+    // Without loads the equilibrium is the unloaded body: the residual is measured absolutely.
+    return applied > 0 ? std::sqrt(residual / applied) : std::sqrt(residual);
+  }
+
+  template <int dim>
+  typename DynamicRelaxation<dim>::Result
+  DynamicRelaxation<dim>::solve(const Progress &progress)
+  {
+    double       factor   = 1.;
+    double       residual = relative_residual();
+    double       smallest = residual;
+    unsigned int iteration;
+    for (iteration = 0;
+         iteration < parameters.max_iterations && !(residual <= parameters.tolerance);
+         ++iteration)
+      {
+        integrator.relax(factor);
+        factor   = velocity_factor();
+        residual = relative_residual();
+        smallest = std::min(smallest, residual);
+        progress(iteration + 1, residual);
+        // A residual that grows by orders of magnitude beyond the least seen does not
+        // come back: a step beyond the stable one, or a body with a rigid motion under load.
+        if (!std::isfinite(residual) || residual > 1e6 * std::max(smallest, 1e-12))
+          {
+            std::ostringstream message;
+            message << "The static solve diverged: after " << iteration + 1
+                    << " iterations the out-of-balance force is " << residual
+                    << " times the applied forces (least " << smallest
+                    << "). Check Time/Time step against the stable step, and that the "
+                       "body is supported (a prescribed displacement): a body that can move "
+                       "as a rigid body under a net load has no static equilibrium.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      }
+    if (!(residual <= parameters.tolerance))
+      {
+        std::ostringstream message;
+        message << "The static solve did not converge: after " << iteration
+                << " iterations (Static solve/Maximum iterations) the out-of-balance force is "
+                << residual << " times the applied forces, above Static solve/Tolerance = "
+                << parameters.tolerance
+                << ". Allow more iterations or a larger tolerance; a body that can move as a "
+                   "rigid body under a net load has no static equilibrium.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    // At rest in the equilibrium found.
+    integrator.relax(0.);
+    return {iteration, relative_residual()};
+  }
+
+  template class DynamicRelaxation<2>;
+  template class DynamicRelaxation<3>;
+} // namespace PeriArlequin
