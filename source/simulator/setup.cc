@@ -204,6 +204,14 @@ namespace PeriArlequin
                    "of the other blendings stretch the bonds next to the slaves up to twice "
                    "as far as the FE field does (tests/coupling/overlap_stretch)."
                 << std::endl;
+        if (time_parameters.integration == Parameters::Integration::static_then_explicit &&
+            coupling_parameters.blending != Parameters::Blending::force)
+          pcout << "  Note: the static solve finds the equilibrium of the blended model, and "
+                   "with 'Coupling/Blending = energy' a plate under uniform tension then "
+                   "stretches 11 % (a 5 mm band) to 20 % (10 mm) more than the continuum, "
+                   "the strain gathering in the band; with force blending within 0.7 %. "
+                   "Prefer force blending for a preload."
+                << std::endl;
       }
     if (resumed)
       print_resume_summary();
