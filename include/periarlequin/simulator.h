@@ -98,9 +98,9 @@ namespace PeriArlequin
 
     /**
      * The static equilibrium under the loads of the current time (dynamic relaxation, bonds
-     * do not break), left at rest; run() calls it first with Time/Integration = static then
-     * explicit. Prints the iterations and the residual reached; throws if it does not
-     * converge.
+     * do not break), left at rest, then Static solve/Released cracks cut; run() calls it
+     * first with Time/Integration = static then explicit. Prints the iterations and the
+     * residual reached; throws if it does not converge.
      */
     typename DynamicRelaxation<dim>::Result
     solve_static();
@@ -317,11 +317,11 @@ namespace PeriArlequin
     /** Local timings; statistics over ranks are gathered at the end of run(). */
     TimerOutput timer;
 
-    Parameters::Geometry       geometry;
-    Parameters::Material       material;
-    Parameters::FiniteElements fe_parameters;
-    Parameters::Time           time_parameters;
-    Parameters::StaticSolve    static_parameters;
+    Parameters::Geometry         geometry;
+    Parameters::Material         material;
+    Parameters::FiniteElements   fe_parameters;
+    Parameters::Time             time_parameters;
+    Parameters::StaticSolve<dim> static_parameters;
     /** Has the static solve of Time/Integration run? */
     bool                   static_solved = false;
     Parameters::Output     output_parameters;

@@ -4,8 +4,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace PeriArlequin
 {
@@ -447,6 +449,55 @@ namespace PeriArlequin
   PDZone<dim>::suspend_fracture(const bool suspended)
   {
     fracture_suspended = suspended;
+  }
+
+  template <int dim>
+  std::size_t
+  PDZone<dim>::cut_bonds(const std::vector<PreCrack<dim>> &cracks,
+                         const std::string                &parameter,
+                         const std::string                &value)
+  {
+    const auto  x          = ghosts.reference_positions();
+    const auto  ids        = ghosts.ids();
+    std::size_t cut        = 0;
+    bool        in_overlap = false;
+    Point<dim>  where;
+    new_damage.clear();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+        {
+          if (bonds.state[n] == BondFamilies<dim>::broken)
+            continue;
+          // The ends in the order of their ids, as for pre-cracks: the ranks holding the two
+          // ends decide alike.
+          const unsigned int j       = bonds.neighbor(i, n);
+          const bool         i_first = ids[i] < ids[j];
+          const Point<dim>  &first = x[i_first ? i : j], &second = x[i_first ? j : i];
+          if (std::none_of(cracks.begin(), cracks.end(), [&](const PreCrack<dim> &crack) {
+                return crack.cuts(first, second);
+              }))
+            continue;
+          if (alpha[i] > 0 || alpha[j] > 0)
+            {
+              in_overlap = true;
+              where      = alpha[i] > 0 ? x[i] : x[j];
+            }
+          bonds.state[n] = BondFamilies<dim>::broken;
+          new_damage.push_back(x[i]);
+          new_damage.push_back(x[j]);
+          cut += 1 + (j < ghosts.n_owned());
+        }
+    if (Utilities::MPI::logical_or(in_overlap, communicator))
+      {
+        std::ostringstream allowed;
+        allowed << "cracks in the pure PD region, more than a bond away from the overlap";
+        if (in_overlap)
+          allowed << " (one cuts a bond at " << where << " m)";
+        throw_invalid_parameter(parameter, value, allowed.str());
+      }
+    bonds.states_changed();
+    find_bonds_near_overlap();
+    return Utilities::MPI::sum(cut, communicator);
   }
 
   template class PDZone<2>;

@@ -55,7 +55,7 @@ namespace PeriArlequin
     Parameters::Material::declare_parameters(prm);
     Parameters::FiniteElements::declare_parameters(prm);
     Parameters::Time::declare_parameters(prm);
-    Parameters::StaticSolve::declare_parameters(prm);
+    Parameters::StaticSolve<dim>::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);
     Parameters::Checkpoint::declare_parameters(prm);
     Parameters::Peridynamics<dim>::declare_parameters(prm);
@@ -89,6 +89,12 @@ namespace PeriArlequin
     fe_parameters.parse_parameters(prm);
     time_parameters.parse_parameters(prm);
     static_parameters.parse_parameters(prm);
+    if (!static_parameters.released_cracks.empty() &&
+        time_parameters.integration != Parameters::Integration::static_then_explicit)
+      throw_invalid_parameter("Static solve/Released cracks",
+                              static_parameters.released_cracks_text,
+                              "empty unless Time/Integration = static then explicit (they are "
+                              "released when the static solve is done)");
     output_parameters.parse_parameters(prm);
     checkpoint_parameters.parse_parameters(prm);
     physics_parameters = checkpointed_parameters(prm);

@@ -104,6 +104,18 @@ namespace PeriArlequin
           << " iterations, |M a| / |F| = " << result.relative_residual << " (Static "
           << "solve/Tolerance " << static_parameters.tolerance << "), strain energy "
           << strain_energy << " J, " << clock.wall_time() << " s" << std::endl;
+    if (!static_parameters.released_cracks.empty())
+      {
+        AssertThrow(pd_zone,
+                    ExcMessage("Invalid input: parameter 'Static solve/Released cracks' = '" +
+                               static_parameters.released_cracks_text +
+                               "'; allowed: empty without a PD zone (Peridynamics/Region), "
+                               "since FE cells cannot break"));
+        const std::size_t cut = pd_zone->cut_bonds(static_parameters.released_cracks,
+                                                   "Static solve/Released cracks",
+                                                   static_parameters.released_cracks_text);
+        pcout << "  released cracks: " << cut << " bond ends cut" << std::endl;
+      }
     return result;
   }
 

@@ -7,8 +7,9 @@ namespace PeriArlequin
 {
   namespace Parameters
   {
+    template <int dim>
     void
-    StaticSolve::entries(ParameterEntries &entries)
+    StaticSolve<dim>::entries(ParameterEntries &entries)
     {
       entries.add("Tolerance",
                   tolerance,
@@ -24,25 +25,40 @@ namespace PeriArlequin
                   "residual it reached. A step costs about one explicit time step; the "
                   "iterations needed grow with the body's size over the time step (several "
                   "times the longitudinal wave's transit in steps) [-].");
+      entries.add("Released cracks",
+                  released_cracks_text,
+                  Patterns::Anything(),
+                  "Cracks that cut the bonds of the PD zone when the static solve is done, "
+                  "before the explicit loop: a crack released in a body that stores elastic "
+                  "energy. Given as Peridynamics/Pre-cracks ('x0, y0 : x1, y1' in 2D, "
+                  "'corner : edge a : edge b' in 3D, separated by ';'), in the pure PD region "
+                  "[m]. Empty: none.");
     }
 
+    template <int dim>
     void
-    StaticSolve::declare_parameters(ParameterHandler &prm)
+    StaticSolve<dim>::declare_parameters(ParameterHandler &prm)
     {
-      ParameterEntries::declare<StaticSolve>(prm, "Static solve");
+      ParameterEntries::declare<StaticSolve<dim>>(prm, "Static solve");
     }
 
+    template <int dim>
     void
-    StaticSolve::parse_parameters(ParameterHandler &prm)
+    StaticSolve<dim>::parse_parameters(ParameterHandler &prm)
     {
       ParameterEntries::parse(prm, "Static solve", *this);
       if (!(tolerance > 0))
         throw_invalid_parameter("Static solve/Tolerance", tolerance, "a value > 0 [-]");
+      released_cracks =
+        PreCrack<dim>::parse_list(released_cracks_text, "Static solve/Released cracks");
     }
+
+    template struct StaticSolve<2>;
+    template struct StaticSolve<3>;
   } // namespace Parameters
 
   template <int dim>
-  DynamicRelaxation<dim>::DynamicRelaxation(const Parameters::StaticSolve       &parameters,
+  DynamicRelaxation<dim>::DynamicRelaxation(const Parameters::StaticSolve<dim>  &parameters,
                                             const std::vector<IntegratedZone *> &zones,
                                             PredictorCorrector<dim>             &integrator,
                                             const double                         time_step)

@@ -194,6 +194,17 @@ namespace PeriArlequin
      */
     void
     suspend_fracture(const bool suspended);
+    /**
+     * Break every intact bond that @p cracks cut (as Peridynamics/Pre-cracks would have at
+     * the start), e.g. a crack released in a preloaded body; returns the bond ends cut on all
+     * ranks (collective). The cut bonds count as new damage. @p parameter and @p value name
+     * the cracks' parameter in the error raised if they cut a bond of the overlap or the
+     * slave layer.
+     */
+    std::size_t
+    cut_bonds(const std::vector<PreCrack<dim>> &cracks,
+              const std::string                &parameter,
+              const std::string                &value);
     types::particle_index
     n_global_particles() const;
     /** Family sizes summed over all particles (each bond counted from both ends). */

@@ -2,6 +2,7 @@
 #define periarlequin_time_dynamic_relaxation_h
 
 #include <periarlequin/base/parameters.h>
+#include <periarlequin/base/regions.h>
 #include <periarlequin/time/integrated_zone.h>
 #include <periarlequin/time/predictor_corrector.h>
 
@@ -9,6 +10,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace PeriArlequin
@@ -17,11 +19,18 @@ namespace PeriArlequin
 
   namespace Parameters
   {
-    /** When a static solve has converged, and how long it may try. */
+    /**
+     * When a static solve has converged, how long it may try, and the cracks released when
+     * it is done.
+     */
+    template <int dim>
     struct StaticSolve
     {
       double       tolerance      = 1e-6;
       unsigned int max_iterations = 200000;
+      /** Released cracks as given, and as parsed. */
+      std::string                released_cracks_text;
+      std::vector<PreCrack<dim>> released_cracks;
 
       void
       entries(ParameterEntries &entries);
@@ -58,7 +67,7 @@ namespace PeriArlequin
     /** Called every iteration with the iteration and the relative residual. */
     using Progress = std::function<void(unsigned int, double)>;
 
-    DynamicRelaxation(const Parameters::StaticSolve       &parameters,
+    DynamicRelaxation(const Parameters::StaticSolve<dim>  &parameters,
                       const std::vector<IntegratedZone *> &zones,
                       PredictorCorrector<dim>             &integrator,
                       const double                         time_step);
@@ -78,10 +87,10 @@ namespace PeriArlequin
     double
     velocity_factor() const;
 
-    const Parameters::StaticSolve parameters;
-    std::vector<IntegratedZone *> zones;
-    PredictorCorrector<dim>      &integrator;
-    const double                  time_step;
+    const Parameters::StaticSolve<dim> parameters;
+    std::vector<IntegratedZone *>      zones;
+    PredictorCorrector<dim>           &integrator;
+    const double                       time_step;
   };
 } // namespace PeriArlequin
 
