@@ -222,6 +222,13 @@ namespace PeriArlequin
     get_stable_time_step() const;
 
   private:
+    /**
+     * With Time/Integration = static then explicit, at the end of setup(): refuse a body
+     * without supports whose loads do not balance (a rigid motion that never settles). Such
+     * a body is taken one relaxation step from rest to measure its net force.
+     */
+    void
+    check_static_equilibrium_exists();
     // The stages of setup() (source/simulator/setup.cc).
     /**
      * The coarse mesh: the box of Geometry, or the Gmsh file of Geometry/Mesh file (then the

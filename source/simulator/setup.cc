@@ -45,6 +45,8 @@ namespace PeriArlequin
       initialize_pd_zone(dt);
     check_time_step();
     create_integrator();
+    if (!resumed && time_parameters.integration == Parameters::Integration::static_then_explicit)
+      check_static_equilibrium_exists();
     print_summary();
     setup_done = true;
   }

@@ -121,6 +121,42 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  Simulator<dim>::check_static_equilibrium_exists()
+  {
+    bool supported = fe_zone && !fe_zone->get_prescribed_dofs().empty();
+    if (pd_zone)
+      for (unsigned int i = 0; i < pd_zone->n_owned_particles() && !supported; ++i)
+        supported = pd_zone->is_prescribed(i);
+    if (Utilities::MPI::logical_or(supported, communicator))
+      return;
+    // Without supports the loads must balance. From rest, one relaxation step without
+    // damping gives each node dt/2 (a_0 + a_1): the momentum it makes is dt times the net
+    // force (the internal forces add up to nothing), with no guess at the loads' functions.
+    const double dt = time_parameters.time_step;
+    integrator->relax(1.);
+    Tensor<1, dim> momentum;
+    if (fe_zone)
+      momentum += fe_zone->linear_momentum();
+    if (pd_zone)
+      momentum += pd_zone->linear_momentum();
+    double applied = 0;
+    for (const IntegratedZone *zone : zones)
+      applied += zone->squared_force_norms().second;
+    const double net = momentum.norm() / dt;
+    if (net > 1e-6 * std::sqrt(applied))
+      {
+        std::ostringstream allowed;
+        allowed << "explicit for a body without supports whose loads do not balance (net force "
+                << net << " N, " << net / std::sqrt(applied)
+                << " of the applied forces): it has no static equilibrium. Prescribe a "
+                   "displacement somewhere (Boundary conditions, Peridynamics/Prescribed "
+                   "region) or balance the loads";
+        throw_invalid_parameter("Time/Integration", "static then explicit", allowed.str());
+      }
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::advance()
   {
     integrator->step();
