@@ -147,8 +147,8 @@ namespace PeriArlequin
       {
         std::ostringstream allowed;
         allowed << "explicit for a body without supports whose loads do not balance (net force "
-                << net << " N, " << net / std::sqrt(applied)
-                << " of the applied forces): it has no static equilibrium. Prescribe a "
+                << net << (dim == 2 ? " N/m" : " N")
+                << "): it has no static equilibrium. Prescribe a "
                    "displacement somewhere (Boundary conditions, Peridynamics/Prescribed "
                    "region) or balance the loads";
         throw_invalid_parameter("Time/Integration", "static then explicit", allowed.str());
