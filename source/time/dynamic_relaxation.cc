@@ -111,7 +111,7 @@ namespace PeriArlequin
          iteration < parameters.max_iterations && !(residual <= parameters.tolerance);
          ++iteration)
       {
-        integrator.relax(factor);
+        integrator.relax(factor, time_step);
         factor   = velocity_factor();
         residual = relative_residual();
         smallest = std::min(smallest, residual);
@@ -142,7 +142,7 @@ namespace PeriArlequin
         AssertThrow(false, ExcMessage(message.str()));
       }
     // At rest in the equilibrium found.
-    integrator.relax(0.);
+    integrator.relax(0., time_step);
     return {iteration, relative_residual()};
   }
 

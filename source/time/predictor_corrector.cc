@@ -1,5 +1,7 @@
 #include <periarlequin/time/predictor_corrector.h>
 
+#include <cmath>
+
 namespace PeriArlequin
 {
   template <int dim>
@@ -67,9 +69,10 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PredictorCorrector<dim>::relax(const double velocity_factor)
+  PredictorCorrector<dim>::relax(const double velocity_factor, const double dt)
   {
-    const double dt = time.get_next_step_size();
+    Assert(!coupling || std::abs(dt - time.get_next_step_size()) <= 1e-12 * dt,
+           ExcMessage("A coupled relaxation steps with the time step."));
     predict(dt);
     complete_step(dt);
     for (IntegratedZone *zone : zones)

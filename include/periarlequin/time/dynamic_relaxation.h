@@ -67,6 +67,7 @@ namespace PeriArlequin
     /** Called every iteration with the iteration and the relative residual. */
     using Progress = std::function<void(unsigned int, double)>;
 
+    /** Relax @p zones by steps of @p time_step of @p integrator (see relax() there). */
     DynamicRelaxation(const Parameters::StaticSolve<dim>  &parameters,
                       const std::vector<IntegratedZone *> &zones,
                       PredictorCorrector<dim>             &integrator,

@@ -49,14 +49,15 @@ namespace PeriArlequin
     step();
 
     /**
-     * One step of dynamic relaxation: a step whose clock stays where it is (the loads and
-     * prescribed displacements of the current time), without work accounting, after which
-     * every velocity is multiplied by @p velocity_factor (the slaves follow): a viscous
-     * damping that keeps the coupling's velocity constraint, since both zones' velocities
-     * scale alike.
+     * One step of dynamic relaxation, of size @p dt: a step whose clock stays where it is
+     * (the loads and prescribed displacements of the current time), without work accounting,
+     * after which every velocity is multiplied by @p velocity_factor (the slaves follow): a
+     * viscous damping that keeps the coupling's velocity constraint, since both zones'
+     * velocities scale alike. A coupling's multiplier matrix is built for the time step: with
+     * a coupling, @p dt must be it.
      */
     void
-    relax(const double velocity_factor);
+    relax(const double velocity_factor, const double dt);
 
     /** Current time and step number. */
     const DiscreteTime &
