@@ -17,7 +17,7 @@ namespace PeriArlequin
                   "Time/Integration = static then explicit: the static solve has converged "
                   "when the out-of-balance force |M a| of the components that are not "
                   "prescribed is at most this fraction of the norm of the applied forces "
-                  "(loads and support reactions); > 0 [-].");
+                  "(loads and support reactions); in [1e-12, 1) [-].");
       entries.add("Maximum iterations",
                   max_iterations,
                   Patterns::Integer(1),
@@ -47,8 +47,12 @@ namespace PeriArlequin
     StaticSolve<dim>::parse_parameters(ParameterHandler &prm)
     {
       ParameterEntries::parse(prm, "Static solve", *this);
-      if (!(tolerance > 0))
-        throw_invalid_parameter("Static solve/Tolerance", tolerance, "a value > 0 [-]");
+      // Below about 1e-12 the residual is the round-off of the forces: it is never reached.
+      if (!(tolerance >= 1e-12 && tolerance < 1))
+        throw_invalid_parameter("Static solve/Tolerance",
+                                tolerance,
+                                "a value in [1e-12, 1) [-] (the residual does not fall below "
+                                "the round-off of the forces)");
       released_cracks =
         PreCrack<dim>::parse_list(released_cracks_text, "Static solve/Released cracks");
     }
@@ -103,9 +107,14 @@ namespace PeriArlequin
   typename DynamicRelaxation<dim>::Result
   DynamicRelaxation<dim>::solve(const Progress &progress)
   {
-    double       factor   = 1.;
-    double       residual = relative_residual();
-    double       smallest = residual;
+    double factor   = 1.;
+    double residual = relative_residual();
+    double smallest = residual;
+    // The last iteration at which the residual fell 1 % below the one of the iteration
+    // before it that did so: a residual that stops falling has reached the round-off of the
+    // forces (or a mode that does not settle).
+    unsigned int last_progress      = 0;
+    double       progress_reference = residual;
     unsigned int iteration;
     for (iteration = 0;
          iteration < parameters.max_iterations && !(residual <= parameters.tolerance);
@@ -114,8 +123,24 @@ namespace PeriArlequin
         integrator.relax(factor, time_step);
         factor   = velocity_factor();
         residual = relative_residual();
+        if (residual < 0.99 * progress_reference)
+          {
+            last_progress      = iteration;
+            progress_reference = residual;
+          }
         smallest = std::min(smallest, residual);
         progress(iteration + 1, residual);
+        if (iteration - last_progress > stall_iterations)
+          {
+            std::ostringstream message;
+            message << "The static solve stalled: after " << iteration + 1
+                    << " iterations the out-of-balance force has not fallen by 1 % in "
+                    << stall_iterations << " iterations; it is " << residual
+                    << " times the applied forces (least " << smallest
+                    << "), above Static solve/Tolerance = " << parameters.tolerance
+                    << ". Use a tolerance above the residual reached.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
         // A residual that grows by orders of magnitude beyond the least seen does not
         // come back: a step beyond the stable one, or a body with a rigid motion under load.
         if (!std::isfinite(residual) || residual > 1e6 * std::max(smallest, 1e-12))

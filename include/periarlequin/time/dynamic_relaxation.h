@@ -75,7 +75,8 @@ namespace PeriArlequin
 
     /**
      * Relax to equilibrium, then leave every velocity at zero. Throws if the tolerance is
-     * not reached within the allowed iterations, or if the residual grows without bound.
+     * not reached within the allowed iterations, if the residual grows without bound, or if
+     * it stops falling.
      */
     Result
     solve(const Progress &progress);
@@ -87,6 +88,9 @@ namespace PeriArlequin
     /** exp(-c dt) with c from Rayleigh's quotient of the current displacement (collective). */
     double
     velocity_factor() const;
+
+    /** Iterations without a 1 % fall of the least residual after which a solve has stalled. */
+    static constexpr unsigned int stall_iterations = 10000;
 
     const Parameters::StaticSolve<dim> parameters;
     std::vector<IntegratedZone *>      zones;
