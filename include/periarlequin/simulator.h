@@ -107,10 +107,20 @@ namespace PeriArlequin
 
     /**
      * One step of the time integrator from the current state, then grow_pd_zone() and
-     * check_fe_strain().
+     * check_fe_strain(). With Time/Integration = quasi-static, one load increment instead
+     * (solve_increment()).
      */
     void
     advance();
+
+    /**
+     * Time/Integration = quasi-static: the clock on by Static solve/Load step (at the first
+     * call, which run() makes, it stays at t = 0), the equilibrium under its loads, then rounds of
+     * bond breaking (the bonds beyond their limit at equilibrium break together) each followed by a
+     * new equilibrium, until a round breaks none. Returns the rounds that broke bonds.
+     */
+    unsigned int
+    solve_increment();
 
     /**
      * With fracture in a coupled run, every Coupling/Strain check interval steps: the FE
@@ -177,6 +187,9 @@ namespace PeriArlequin
     const Coupling<dim> *
     get_coupling() const;
 
+    /** The communicator of the run. */
+    MPI_Comm
+    get_communicator() const;
     /** Does the case have FE cells? */
     bool
     has_fe_zone() const;
@@ -223,9 +236,21 @@ namespace PeriArlequin
 
   private:
     /**
-     * With Time/Integration = static then explicit, at the end of setup(): refuse a body
-     * without supports whose loads do not balance (a rigid motion that never settles). Such
-     * a body is taken one relaxation step from rest to measure its net force.
+     * The static equilibrium under the loads of the current time, bonds unbroken, left at
+     * rest (one DynamicRelaxation kept for the run); progress lines on rank 0.
+     */
+    typename DynamicRelaxation<dim>::Result
+    relax_to_equilibrium();
+    /**
+     * The step of the clock: Time/Time step, or Static solve/Load step for a quasi-static
+     * run.
+     */
+    double
+    clock_step() const;
+    /**
+     * With Time/Integration = static then explicit or quasi-static, at the end of setup(): refuse a
+     * body without supports whose loads do not balance (a rigid motion that never settles). Such a
+     * body is taken one relaxation step from rest to measure its net force.
      */
     void
     check_static_equilibrium_exists();
@@ -330,9 +355,13 @@ namespace PeriArlequin
     Parameters::Time             time_parameters;
     Parameters::StaticSolve<dim> static_parameters;
     /** Has the static solve of Time/Integration run? */
-    bool                   static_solved = false;
-    Parameters::Output     output_parameters;
-    Parameters::Checkpoint checkpoint_parameters;
+    bool static_solved = false;
+    /** Has a quasi-static run solved for the loads of t = 0? */
+    bool quasi_static_started = false;
+    /** The relaxation of static and quasi-static solves (created at the first). */
+    std::unique_ptr<DynamicRelaxation<dim>> relaxation;
+    Parameters::Output                      output_parameters;
+    Parameters::Checkpoint                  checkpoint_parameters;
     /** The parameters a checkpoint must agree with (checkpointed_parameters()). */
     std::vector<std::string> physics_parameters;
     /** What a checkpoint holds besides the cell data; set while resuming from one. */

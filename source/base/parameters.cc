@@ -217,8 +217,13 @@ namespace PeriArlequin
                   "explicit: first the static equilibrium under the loads and prescribed "
                   "displacements of t = 0 (dynamic relaxation, see subsection Static solve; "
                   "bonds do not break in it), then the explicit loop from it at rest: a body "
-                  "that stores elastic energy before the dynamics starts. The energy history "
-                  "then starts with the stored strain energy and no external work.");
+                  "that stores elastic energy before the dynamics starts (the energy history "
+                  "starts with the stored strain energy and the work that stored it). "
+                  "quasi-static: no dynamics; a static equilibrium at each t = k x Static "
+                  "solve/Load step up to the end time, where t is the time of the loads and "
+                  "prescribed displacements; after each equilibrium the bonds beyond their "
+                  "limit break and the body is equilibrated again, until none breaks "
+                  "(quasi-static fracture). History rows and outputs count increments.");
       entries.add("Time step",
                   time_step,
                   Patterns::Double(),
@@ -246,8 +251,9 @@ namespace PeriArlequin
       if (!(end_time > 0))
         throw_invalid_parameter("Time/End time", end_time, "a value > 0 [s]");
       // The step counter is an unsigned int; a billion steps is beyond any run of this code.
+      // (A quasi-static run counts load increments instead, checked with Static solve.)
       const double max_steps = 1e9;
-      if (!(end_time / time_step <= max_steps))
+      if (integration != Integration::quasi_static && !(end_time / time_step <= max_steps))
         {
           std::ostringstream allowed;
           allowed << "at most " << max_steps << " time steps, End time <= " << max_steps * time_step

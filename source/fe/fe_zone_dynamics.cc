@@ -78,11 +78,6 @@ namespace PeriArlequin
   void
   FEZone<dim>::predict(const double dt)
   {
-    if (tracks_work)
-      {
-        previous_displacement  = state.displacement;
-        previous_applied_force = applied_force;
-      }
     state.displacement.add(dt, state.velocity, 0.5 * dt * dt, state.acceleration);
     state.velocity.add(0.5 * dt, state.acceleration);
   }
@@ -138,6 +133,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  const typename FEZone<dim>::VectorType &
+  FEZone<dim>::applied_forces() const
+  {
+    return applied_force;
+  }
+
+  template <int dim>
   void
   FEZone<dim>::compute_accelerations(const double)
   {
@@ -172,6 +174,21 @@ namespace PeriArlequin
     state.velocity.add(0.5 * dt, state.acceleration);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       state.velocity.local_element(prescribed[k].local_index) = prescribed_velocity[k];
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::start_work_interval(const bool from_unloaded)
+  {
+    if (!tracks_work)
+      return;
+    previous_displacement  = state.displacement;
+    previous_applied_force = applied_force;
+    if (from_unloaded)
+      {
+        previous_displacement  = 0.;
+        previous_applied_force = 0.;
+      }
   }
 
   template <int dim>
@@ -336,6 +353,7 @@ namespace PeriArlequin
   template void        FEZone<dim>::compute_accelerations(const double);                         \
   template void        FEZone<dim>::correct(const double);                                       \
   template void        FEZone<dim>::account_work();                                              \
+  template void        FEZone<dim>::start_work_interval(const bool);                             \
   template double      FEZone<dim>::kinetic_energy() const;                                      \
   template double      FEZone<dim>::strain_energy() const;                                       \
   template std::vector<double> FEZone<dim>::largest_principal_strains(const Quadrature<dim> &,   \
@@ -349,11 +367,12 @@ namespace PeriArlequin
   template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);               \
   template void FEZone<dim>::set_contact(Contact<dim> *);                                        \
   template void FEZone<dim>::compute_forces(const double);                                       \
-  template FEZone<dim>::VectorType  &FEZone<dim>::interface_forces();                            \
-  template FEZone<dim>::VectorType  &FEZone<dim>::applied_forces();                              \
-  template void                      FEZone<dim>::scale_velocities(const double);                \
-  template double                    FEZone<dim>::displacement_inertia() const;                  \
-  template std::pair<double, double> FEZone<dim>::squared_force_norms() const;
+  template FEZone<dim>::VectorType       &FEZone<dim>::interface_forces();                       \
+  template FEZone<dim>::VectorType       &FEZone<dim>::applied_forces();                         \
+  template const FEZone<dim>::VectorType &FEZone<dim>::applied_forces() const;                   \
+  template void                           FEZone<dim>::scale_velocities(const double);           \
+  template double                         FEZone<dim>::displacement_inertia() const;             \
+  template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

@@ -337,7 +337,7 @@ namespace PeriArlequin
               traction_faces[i] |= (1u << b);
             else if (condition.type == BoundaryType::displacement && !slave[i] &&
                      distance < depth * (1. - 1e-12))
-              prescribed.add(i, x[i], *condition.function, components);
+              prescribed.add(i, x[i], *condition.function, components, b);
           }
       }
   }

@@ -67,11 +67,6 @@ namespace PeriArlequin
   {
     const auto u = state.displacements(), v = state.velocities();
     const auto a = state.accelerations();
-    if (tracks_work)
-      {
-        previous_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
-        previous_applied_force = applied_force;
-      }
     for_each_subrange(ghosts.n_owned(), [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
@@ -239,11 +234,25 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  PDZone<dim>::start_work_interval(const bool from_unloaded)
+  {
+    if (!tracks_work)
+      return;
+    const auto u = state.displacements();
+    previous_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
+    previous_applied_force = applied_force;
+    if (from_unloaded)
+      for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+        previous_displacement[i] = previous_applied_force[i] = Tensor<1, dim>();
+  }
+
+  template <int dim>
+  void
   PDZone<dim>::account_work()
   {
     if (!tracks_work)
       return;
-    // Trapezoidal work of the applied forces over the step.
+    // Trapezoidal work of the applied forces over the interval.
     const auto u         = state.displacements();
     double     increment = 0;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)

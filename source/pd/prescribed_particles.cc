@@ -18,8 +18,8 @@ namespace PeriArlequin
     particles.clear();
     is_prescribed.assign(n_owned, false);
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (const auto &region : parameters.prescribed)
-        if (region.region.contains(positions[i]))
+      for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
+        if (const auto &region = parameters.prescribed[r]; region.region.contains(positions[i]))
           {
             std::array<bool, dim> components;
             for (unsigned int d = 0; d < dim; ++d)
@@ -30,7 +30,8 @@ namespace PeriArlequin
                                  region.prescribes_velocity,
                                  positions[i],
                                  Tensor<1, dim>(),
-                                 Tensor<1, dim>()});
+                                 Tensor<1, dim>(),
+                                 2 * dim + r});
             is_prescribed[i] = true;
             break;
           }
@@ -41,12 +42,13 @@ namespace PeriArlequin
   PrescribedParticles<dim>::add(const unsigned int           i,
                                 const Point<dim>            &position,
                                 Function<dim>               &function,
-                                const std::array<bool, dim> &components)
+                                const std::array<bool, dim> &components,
+                                const unsigned int           boundary_id)
   {
     if (is_prescribed[i])
       return;
     particles.push_back(
-      {i, &function, components, false, position, Tensor<1, dim>(), Tensor<1, dim>()});
+      {i, &function, components, false, position, Tensor<1, dim>(), Tensor<1, dim>(), boundary_id});
     is_prescribed[i] = true;
   }
 

@@ -1,6 +1,7 @@
 #include <periarlequin/postprocess/postprocessor.h>
 #include <periarlequin/simulator.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -255,6 +256,57 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  SupportReactions<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    // Supports: the boundary ids of the box, then the prescribed regions.
+    constexpr unsigned int n_supports =
+      2 * dim + Parameters::Peridynamics<dim>::n_prescribed_regions;
+    // Per support and component: reaction, displacement, prescribed components.
+    std::vector<double> sums(3 * n_supports * dim, 0.);
+    const auto          add = [&](const unsigned int support,
+                         const unsigned int d,
+                         const double       reaction,
+                         const double       displacement) {
+      if (support >= n_supports)
+        return;
+      double *entry = &sums[3 * (support * dim + d)];
+      entry[0] += reaction;
+      entry[1] += displacement;
+      entry[2] += 1;
+    };
+    if (simulator.has_fe_zone())
+      {
+        const FEZone<dim> &fe    = simulator.get_fe_zone();
+        const auto        &force = fe.applied_forces();
+        const auto        &u     = fe.get_state().displacement;
+        for (const auto &dof : fe.get_prescribed_dofs())
+          add(dof.boundary_id,
+              dof.component,
+              force.local_element(dof.local_index),
+              u.local_element(dof.local_index));
+      }
+    if (const PDZone<dim> *pd = simulator.get_pd_zone())
+      pd->for_each_support_component(add);
+    Utilities::MPI::sum(sums, simulator.get_communicator(), sums);
+    if (columns.empty())
+      for (unsigned int k = 0; k < n_supports * dim; ++k)
+        if (sums[3 * k + 2] > 0)
+          columns.push_back(k);
+    const char *axes[3] = {"x", "y", "z"};
+    for (const unsigned int k : columns)
+      {
+        const unsigned int support = k / dim;
+        const std::string  name =
+          (support < 2 * dim ? "boundary" + std::to_string(support) :
+                               "region" + std::to_string(support - 2 * dim)) +
+          "_" + axes[k % dim];
+        history.add_value("reaction_" + name, sums[3 * k]);
+        history.add_value("displacement_" + name, sums[3 * k + 1] / std::max(sums[3 * k + 2], 1.));
+      }
+  }
+
+  template <int dim>
+  void
   ZoneSizes<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
     const PDZone<dim> *pd = simulator.get_pd_zone();
@@ -315,6 +367,8 @@ namespace PeriArlequin
   template class Probes<3>;
   template class LinearMomentum<2>;
   template class LinearMomentum<3>;
+  template class SupportReactions<2>;
+  template class SupportReactions<3>;
   template class ZoneSizes<2>;
   template class ZoneSizes<3>;
   template class PluginRegistry<Postprocessor<2>>;
@@ -339,6 +393,10 @@ namespace PeriArlequin
                                       "probes",
                                       "velocity at points (FE field, or the nearest PD particle "
                                       "in the pure PD zone)")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(SupportReactions,
+                                      "support reactions",
+                                      "load and mean displacement of every support (displacement "
+                                      "boundary, prescribed region), per prescribed component")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(LinearMomentum,
                                       "linear momentum",
                                       "linear momentum of both zones, per component")

@@ -78,6 +78,9 @@ namespace PeriArlequin
   Simulator<dim>::resume_run()
   {
     integrator->resume_at(resumed->step);
+    // A checkpoint holds an equilibrium of a quasi-static run: the next solve is the next
+    // increment's.
+    quasi_static_started = true;
     if (zone_growth)
       {
         // Every rank read the record: rank 0 alone takes the running damage.
@@ -316,7 +319,7 @@ namespace PeriArlequin
                                  "(only the subsections Output and Checkpoint and Time/End "
                                  "time may change)."));
       }
-    AssertThrow(static_cast<std::uint64_t>(resumed->step) * time_parameters.time_step <=
+    AssertThrow(static_cast<std::uint64_t>(resumed->step) * clock_step() <=
                   time_parameters.end_time * (1 + 1e-12),
                 ExcMessage("Invalid input: parameter 'Time/End time' = " +
                            std::to_string(time_parameters.end_time) +

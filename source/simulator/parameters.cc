@@ -1,6 +1,8 @@
 #include <periarlequin/simulator.h>
 #include <periarlequin/simulator/checkpoint_record.h>
 
+#include <sstream>
+
 namespace PeriArlequin
 {
   namespace Parameters
@@ -95,6 +97,25 @@ namespace PeriArlequin
                               static_parameters.released_cracks_text,
                               "empty unless Time/Integration = static then explicit (they are "
                               "released when the static solve is done)");
+    if (time_parameters.integration == Parameters::Integration::quasi_static)
+      {
+        const double step = static_parameters.load_step;
+        if (!(step > 0))
+          throw_invalid_parameter("Static solve/Load step",
+                                  step,
+                                  "a value > 0 [s] with Time/Integration = quasi-static (the "
+                                  "time between the equilibria)");
+        // The increment counter is an unsigned int, and each increment is a static solve.
+        const double max_increments = 1e6;
+        if (!(time_parameters.end_time / step <= max_increments))
+          {
+            std::ostringstream allowed;
+            allowed << "at most " << max_increments
+                    << " quasi-static increments, End time <= " << max_increments * step
+                    << " s with Static solve/Load step = " << step << " s";
+            throw_invalid_parameter("Time/End time", time_parameters.end_time, allowed.str());
+          }
+      }
     output_parameters.parse_parameters(prm);
     checkpoint_parameters.parse_parameters(prm);
     physics_parameters = checkpointed_parameters(prm);
@@ -117,9 +138,10 @@ namespace PeriArlequin
     if (contact_model != "none")
       contact = ContactRegistry<dim>::create(contact_model, prm);
     if (contact_model != "none" &&
-        time_parameters.integration == Parameters::Integration::static_then_explicit)
+        time_parameters.integration != Parameters::Integration::explicit_dynamics)
       throw_invalid_parameter("Time/Integration",
-                              "static then explicit",
+                              selection_name(time_parameters.integration,
+                                             Parameters::integration_names),
                               "explicit while a contact model is on (Contact/Model = " +
                                 contact_model + "): the static solve does not treat contact");
     prm.leave_subsection();

@@ -45,7 +45,7 @@ namespace PeriArlequin
       initialize_pd_zone(dt);
     check_time_step();
     create_integrator();
-    if (!resumed && time_parameters.integration == Parameters::Integration::static_then_explicit)
+    if (!resumed && time_parameters.integration != Parameters::Integration::explicit_dynamics)
       check_static_equilibrium_exists();
     print_summary();
     setup_done = true;
@@ -162,17 +162,26 @@ namespace PeriArlequin
       zones.push_back(pd_zone.get());
     if (fe_zone)
       zones.push_back(fe_zone.get());
-    n_steps = static_cast<unsigned int>(
-      std::ceil(time_parameters.end_time / time_parameters.time_step - 1e-9));
+    n_steps = static_cast<unsigned int>(std::ceil(time_parameters.end_time / clock_step() - 1e-9));
     integrator = std::make_unique<PredictorCorrector<dim>>(zones,
                                                            coupling.get(),
-                                                           time_parameters.time_step,
+                                                           clock_step(),
                                                            n_steps,
                                                            timer);
     if (resumed)
       resume_run();
     else
-      integrator->initialize();
+      {
+        // A static solve starts from the displacements of t = 0 as given: its bonds break
+        // only in equilibrium.
+        const bool hold_bonds =
+          pd_zone && time_parameters.integration != Parameters::Integration::explicit_dynamics;
+        if (hold_bonds)
+          pd_zone->suspend_fracture(true);
+        integrator->initialize();
+        if (hold_bonds)
+          pd_zone->suspend_fracture(false);
+      }
   }
 
   template <int dim>
@@ -191,8 +200,14 @@ namespace PeriArlequin
           << (pd_zone ? pd_zone->n_global_bonds() : 0) << " bonds) on "
           << Utilities::MPI::n_mpi_processes(communicator) << " rank(s) x "
           << MultithreadInfo::n_threads() << " thread(s)\n"
-          << "  time step " << dt << " s (" << n_steps << " steps to " << time_parameters.end_time
-          << " s), estimated stable step " << stable_time_step << " s, longitudinal wave speed "
+          << "  time step " << dt << " s";
+    if (time_parameters.integration == Parameters::Integration::quasi_static)
+      pcout << ", quasi-static: " << n_steps << " load increments of " << clock_step() << " s to ";
+    else
+      pcout << " (" << n_steps << " steps to ";
+    pcout << time_parameters.end_time << " s"
+          << (time_parameters.integration == Parameters::Integration::quasi_static ? "" : ")")
+          << ", estimated stable step " << stable_time_step << " s, longitudinal wave speed "
           << material.longitudinal_wave_speed(dim) << " m/s" << std::endl;
     if (pd_zone)
       print_pd_summary();
@@ -206,7 +221,7 @@ namespace PeriArlequin
                    "of the other blendings stretch the bonds next to the slaves up to twice "
                    "as far as the FE field does (tests/coupling/overlap_stretch)."
                 << std::endl;
-        if (time_parameters.integration == Parameters::Integration::static_then_explicit &&
+        if (time_parameters.integration != Parameters::Integration::explicit_dynamics &&
             coupling_parameters.blending != Parameters::Blending::force)
           pcout << "  Note: the static solve finds the equilibrium of the blended model, and "
                    "with 'Coupling/Blending = energy' a plate under uniform tension then "

@@ -24,6 +24,10 @@ namespace PeriArlequin
     if (!resumed && !static_solved &&
         time_parameters.integration == Parameters::Integration::static_then_explicit)
       solve_static();
+    // A quasi-static run starts from the equilibrium of t = 0 (with its cracks).
+    if (!resumed && !quasi_static_started &&
+        time_parameters.integration == Parameters::Integration::quasi_static)
+      solve_increment();
     if (resumed)
       restore_outputs();
     else
@@ -69,22 +73,24 @@ namespace PeriArlequin
 
   template <int dim>
   typename DynamicRelaxation<dim>::Result
-  Simulator<dim>::solve_static()
+  Simulator<dim>::relax_to_equilibrium()
   {
-    if (!setup_done)
-      setup();
     TimerOutput::Scope scope(timer, "static solve");
+    if (!relaxation)
+      {
+        // Without a coupling (whose multiplier matrix is built for the time step) the
+        // relaxation needs no accuracy in time: it steps at 0.9 of the estimated stable step.
+        const double step = coupling ? time_parameters.time_step :
+                                       std::max(time_parameters.time_step, 0.9 * stable_time_step);
+        relaxation =
+          std::make_unique<DynamicRelaxation<dim>>(static_parameters, zones, *integrator, step);
+      }
     if (pd_zone)
       pd_zone->suspend_fracture(true);
-    // Without a coupling (whose multiplier matrix is built for the time step) the
-    // relaxation needs no accuracy in time: it steps at 0.9 of the estimated stable step.
-    const double           step = coupling ? time_parameters.time_step :
-                                             std::max(time_parameters.time_step, 0.9 * stable_time_step);
-    DynamicRelaxation<dim> relaxation(static_parameters, zones, *integrator, step);
-    Timer                  clock;
-    double                 last_report = 0;
-    const double           interval    = output_parameters.progress_interval;
-    const auto result = relaxation.solve([&](const unsigned int iteration, const double residual) {
+    Timer        clock;
+    double       last_report = 0;
+    const double interval    = output_parameters.progress_interval;
+    const auto result = relaxation->solve([&](const unsigned int iteration, const double residual) {
       // Rank 0's clock decides for all, as for the progress of the time loop.
       const double wall = Utilities::MPI::broadcast(communicator, clock.wall_time(), 0);
       if (interval > 0 && wall - last_report >= interval)
@@ -97,13 +103,28 @@ namespace PeriArlequin
     });
     if (pd_zone)
       pd_zone->suspend_fracture(false);
+    return result;
+  }
+
+  template <int dim>
+  typename DynamicRelaxation<dim>::Result
+  Simulator<dim>::solve_static()
+  {
+    if (!setup_done)
+      setup();
+    Timer clock;
+    // The work that stores the strain energy: the trapezoid from the unloaded body is exact
+    // for the linear response of intact bonds.
+    integrator->start_work_interval(true);
+    const auto result = relax_to_equilibrium();
+    integrator->account_work();
     static_solved        = true;
     double strain_energy = 0;
     for (const IntegratedZone *zone : zones)
       strain_energy += zone->strain_energy();
-    pcout << "  static solve: equilibrium after " << result.iterations << " iterations of " << step
-          << " s, |M a| / |F| = " << result.relative_residual << " (Static "
-          << "solve/Tolerance " << static_parameters.tolerance << "), strain energy "
+    pcout << "  static solve: equilibrium after " << result.iterations << " iterations of "
+          << relaxation->get_time_step() << " s, |M a| / |F| = " << result.relative_residual
+          << " (Static solve/Tolerance " << static_parameters.tolerance << "), strain energy "
           << strain_energy << " J, " << clock.wall_time() << " s" << std::endl;
     if (!static_parameters.released_cracks.empty())
       {
@@ -152,15 +173,60 @@ namespace PeriArlequin
                 << "): it has no static equilibrium. Prescribe a "
                    "displacement somewhere (Boundary conditions, Peridynamics/Prescribed "
                    "region) or balance the loads";
-        throw_invalid_parameter("Time/Integration", "static then explicit", allowed.str());
+        throw_invalid_parameter("Time/Integration",
+                                selection_name(time_parameters.integration,
+                                               Parameters::integration_names),
+                                allowed.str());
       }
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::solve_increment()
+  {
+    // The first solve, for the loads of t = 0, starts from the unloaded body.
+    integrator->start_work_interval(!quasi_static_started);
+    // The first call solves for the loads of t = 0, the next ones for those of the clock's
+    // next step.
+    if (quasi_static_started)
+      integrator->advance_clock();
+    quasi_static_started    = true;
+    unsigned int iterations = relax_to_equilibrium().iterations;
+    unsigned int rounds     = 0;
+    std::size_t  new_breaks = 0;
+    if (pd_zone && pd_parameters.fracture)
+      for (std::size_t broken = pd_zone->n_global_broken_bonds();; ++rounds)
+        {
+          // One more relaxation step at rest, with fracture on: the force pass breaks the
+          // bonds beyond their limit in the equilibrium (it moves nothing but by dt^2/2
+          // times the residual acceleration).
+          integrator->relax(0., relaxation->get_time_step());
+          const std::size_t now = pd_zone->n_global_broken_bonds();
+          if (now == broken)
+            break;
+          new_breaks += now - broken;
+          broken = now;
+          iterations += relax_to_equilibrium().iterations;
+        }
+    if (output_parameters.progress_interval > 0)
+      pcout << "  increment " << get_step_number() << ", t = " << get_time() << " s: " << iterations
+            << " relaxation steps"
+            << (rounds > 0 ? ", " + std::to_string(new_breaks) + " bond ends broke in " +
+                               std::to_string(rounds) + " rounds" :
+                             "")
+            << std::endl;
+    integrator->account_work();
+    return rounds;
   }
 
   template <int dim>
   void
   Simulator<dim>::advance()
   {
-    integrator->step();
+    if (time_parameters.integration == Parameters::Integration::quasi_static)
+      solve_increment();
+    else
+      integrator->step();
     if (zone_growth)
       grow_pd_zone();
     const unsigned int interval = coupling_parameters.strain_check_interval;
@@ -441,6 +507,22 @@ namespace PeriArlequin
   Simulator<dim>::get_time_step() const
   {
     return time_parameters.time_step;
+  }
+
+  template <int dim>
+  MPI_Comm
+  Simulator<dim>::get_communicator() const
+  {
+    return communicator;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::clock_step() const
+  {
+    return time_parameters.integration == Parameters::Integration::quasi_static ?
+             static_parameters.load_step :
+             time_parameters.time_step;
   }
 
   template <int dim>

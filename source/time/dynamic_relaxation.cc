@@ -1,6 +1,7 @@
 #include <periarlequin/time/dynamic_relaxation.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace PeriArlequin
@@ -14,10 +15,13 @@ namespace PeriArlequin
       entries.add("Tolerance",
                   tolerance,
                   Patterns::Double(0),
-                  "Time/Integration = static then explicit: the static solve has converged "
+                  "Time/Integration = static then explicit or quasi-static: a static solve has "
+                  "converged "
                   "when the out-of-balance force |M a| of the components that are not "
                   "prescribed is at most this fraction of the norm of the applied forces "
-                  "(loads and support reactions); in [1e-12, 1) [-].");
+                  "(loads and support reactions; in a quasi-static run the largest norm "
+                  "reached so far, so that a body that cracks through and unloads still "
+                  "converges); in [1e-12, 1) [-].");
       entries.add("Maximum iterations",
                   max_iterations,
                   Patterns::Integer(1),
@@ -25,6 +29,15 @@ namespace PeriArlequin
                   "residual it reached. A step costs about one explicit time step; the "
                   "iterations needed grow with the body's size over the time step (several "
                   "times the longitudinal wave's transit in steps) [-].");
+      entries.add("Load step",
+                  load_step,
+                  Patterns::Double(0),
+                  "Time/Integration = quasi-static: the equilibria are those under the loads "
+                  "and prescribed displacements of t = k x Load step, k = 1, 2, ... up to "
+                  "Time/End time; > 0 then. The time is that of the load functions only: "
+                  "choose the step so that an increment changes the load by a small fraction "
+                  "of the load at which cracks grow (a peak load is resolved to one "
+                  "increment) [s].");
       entries.add("Released cracks",
                   released_cracks_text,
                   Patterns::Anything(),
@@ -90,7 +103,7 @@ namespace PeriArlequin
 
   template <int dim>
   double
-  DynamicRelaxation<dim>::relative_residual() const
+  DynamicRelaxation<dim>::relative_residual()
   {
     double residual = 0, applied = 0;
     for (const IntegratedZone *zone : zones)
@@ -99,16 +112,20 @@ namespace PeriArlequin
         residual += r;
         applied += f;
       }
+    largest_applied = std::max(largest_applied, applied);
     // Without loads the equilibrium is the unloaded body: the residual is measured absolutely.
-    return applied > 0 ? std::sqrt(residual / applied) : std::sqrt(residual);
+    return largest_applied > 0 ? std::sqrt(residual / largest_applied) : std::sqrt(residual);
   }
 
   template <int dim>
   typename DynamicRelaxation<dim>::Result
   DynamicRelaxation<dim>::solve(const Progress &progress)
   {
+    // The residual is known after the first step only: the forces of the current time (a
+    // clock moved on since the last evaluation, as between quasi-static increments) are
+    // evaluated in it.
     double factor   = 1.;
-    double residual = relative_residual();
+    double residual = std::numeric_limits<double>::infinity();
     double smallest = residual;
     // The last iteration at which the residual fell 1 % below the one of the iteration
     // before it that did so: a residual that stops falling has reached the round-off of the
@@ -169,6 +186,13 @@ namespace PeriArlequin
     // At rest in the equilibrium found.
     integrator.relax(0., time_step);
     return {iteration, relative_residual()};
+  }
+
+  template <int dim>
+  double
+  DynamicRelaxation<dim>::get_time_step() const
+  {
+    return time_step;
   }
 
   template class DynamicRelaxation<2>;

@@ -49,10 +49,18 @@ namespace PeriArlequin
   PredictorCorrector<dim>::step()
   {
     const double dt = time.get_next_step_size();
+    start_work_interval();
     predict(dt);
     time.advance_time();
     complete_step(dt);
     account_work();
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::advance_clock()
+  {
+    time.advance_time();
   }
 
   template <int dim>
@@ -71,8 +79,6 @@ namespace PeriArlequin
   void
   PredictorCorrector<dim>::relax(const double velocity_factor, const double dt)
   {
-    Assert(!coupling || std::abs(dt - time.get_next_step_size()) <= 1e-12 * dt,
-           ExcMessage("A coupled relaxation steps with the time step."));
     predict(dt);
     complete_step(dt);
     for (IntegratedZone *zone : zones)
@@ -143,6 +149,14 @@ namespace PeriArlequin
         coupling->enforce_constraint();
         coupling->set_slave_velocities();
       });
+  }
+
+  template <int dim>
+  void
+  PredictorCorrector<dim>::start_work_interval(const bool from_unloaded)
+  {
+    for (IntegratedZone *zone : zones)
+      zone->start_work_interval(from_unloaded);
   }
 
   template <int dim>

@@ -64,6 +64,18 @@ namespace PeriArlequin
     return names.front().second;
   }
 
+  /** The name of @p value in @p names. */
+  template <typename Enum>
+  const std::string &
+  selection_name(const Enum value, const SelectionNames<Enum> &names)
+  {
+    for (const auto &[name, candidate] : names)
+      if (candidate == value)
+        return name;
+    AssertThrow(false, ExcMessage("A value without a name in its selection."));
+    return names.front().first;
+  }
+
   /**
    * The entries of one parameter structure, written once for declaring and for parsing: a
    * structure lists its entries in `void entries(ParameterEntries &entries)` with add() and
@@ -294,19 +306,24 @@ namespace PeriArlequin
       parse_parameters(ParameterHandler &prm);
     };
 
-    /** Explicit time stepping. */
-    /** How the time loop starts. */
+    /** How the time loop advances. */
     enum class Integration
     {
       /** The explicit loop from the initial conditions. */
       explicit_dynamics,
       /** The static equilibrium under the loads of t = 0 first, then the explicit loop. */
-      static_then_explicit
+      static_then_explicit,
+      /**
+       * A sequence of static equilibria under the loads of t = k x Static solve/Load step,
+       * bonds breaking between re-equilibrations.
+       */
+      quasi_static
     };
 
     inline const SelectionNames<Integration> integration_names = {
       {"explicit", Integration::explicit_dynamics},
-      {"static then explicit", Integration::static_then_explicit}};
+      {"static then explicit", Integration::static_then_explicit},
+      {"quasi-static", Integration::quasi_static}};
 
     struct Time
     {

@@ -146,6 +146,9 @@ namespace PeriArlequin
     /** ... and the applied forces F_ext (the slaves' loads: they count in the work). */
     VectorType &
     applied_forces();
+    /** The applied forces of the last step: at a prescribed DoF, the support reaction. */
+    const VectorType &
+    applied_forces() const;
     /**
      * a = M^-1 (F_ext - F_int + F_interface), then contact, then the prescribed DoFs (their
      * applied force takes the support reaction).
@@ -156,6 +159,8 @@ namespace PeriArlequin
     correct(const double dt) override;
     void
     account_work() override;
+    void
+    start_work_interval(const bool from_unloaded = false) override;
     double
     kinetic_energy() const override;
     /** 1/2 u . F_int of the last computed forces. */

@@ -154,9 +154,11 @@ namespace PeriArlequin
     /** v += dt/2 a, then the prescribed velocities of this step. */
     void
     correct(const double dt) override;
-    /** Work of body forces and of the prescribed particles' reactions over the step. */
+    /** Work of body forces and of the prescribed particles' reactions over the interval. */
     void
     account_work() override;
+    void
+    start_work_interval(const bool from_unloaded = false) override;
 
     /**
      * Internal force density of the current displacement (ghost exchange, model scalars,
@@ -345,6 +347,21 @@ namespace PeriArlequin
     /** Does a prescribed region or a displacement boundary layer hold owned particle @p i? */
     bool
     is_prescribed(const unsigned int i) const;
+    /**
+     * Call @p visit(support, d, reaction, displacement) for every prescribed component d of
+     * an owned particle: its support (PrescribedParticles::for_each_support_component()),
+     * the support reaction of the last step and the displacement [N, m].
+     */
+    template <typename Visitor>
+    void
+    for_each_support_component(const Visitor &visit) const
+    {
+      const auto u = state.displacements();
+      prescribed.for_each_support_component(
+        [&](const unsigned int i, const unsigned int d, const unsigned int support) {
+          visit(support, d, applied_force[i][d], u[i][d]);
+        });
+    }
     /** Is owned particle @p i a slave (1 - alpha below Coupling/Minimum PD weight)? */
     bool
     is_slave(const unsigned int i) const;

@@ -31,13 +31,15 @@ namespace PeriArlequin
 
     /**
      * Prescribe the displacement @p function on the @p components of owned particle @p i
-     * (a particle of a boundary layer), unless a region already prescribes it.
+     * (a particle of the boundary layer of face @p boundary_id), unless a region already
+     * prescribes it.
      */
     void
     add(const unsigned int           i,
         const Point<dim>            &position,
         Function<dim>               &function,
-        const std::array<bool, dim> &components);
+        const std::array<bool, dim> &components,
+        const unsigned int           boundary_id);
 
     /** Does a prescribed region or boundary layer hold owned particle @p i? */
     bool
@@ -66,10 +68,23 @@ namespace PeriArlequin
     void
     for_each_component(const Visitor &visit) const
     {
+      for_each_support_component(
+        [&](const unsigned int i, const unsigned int d, const unsigned int) { visit(i, d); });
+    }
+
+    /**
+     * Call @p visit(i, d, support) for every prescribed component d of owned particle i,
+     * with the support that prescribes it: a boundary layer's boundary id, or 2 dim + r for
+     * Peridynamics/Prescribed region r (after the boundary ids of the box).
+     */
+    template <typename Visitor>
+    void
+    for_each_support_component(const Visitor &visit) const
+    {
       for (const auto &p : particles)
         for (unsigned int d = 0; d < dim; ++d)
           if (p.components[d])
-            visit(p.local_index, d);
+            visit(p.local_index, d, p.support);
     }
 
   private:
@@ -82,6 +97,8 @@ namespace PeriArlequin
       Point<dim>            position;
       /** Prescribed velocity and acceleration at the current time (prescribed components). */
       Tensor<1, dim> velocity, acceleration;
+      /** See for_each_support_component(). */
+      unsigned int support;
     };
 
     const Parameters::Peridynamics<dim> &parameters;

@@ -162,6 +162,26 @@ namespace PeriArlequin
     std::vector<unsigned int> particle_owner;
   };
 
+  /**
+   * Load and displacement of each support: for every boundary with a displacement condition
+   * and every Peridynamics/Prescribed region, per prescribed component, the sum of the
+   * support reactions of its FE DoFs and PD particles [N, N/m in 2D] and their mean
+   * displacement [m]. Columns `reaction_<support>_<axis>` and
+   * `displacement_<support>_<axis>`, support `boundary<id>` or `region<r>`: the
+   * load-displacement curve of a test specimen held or driven by a grip.
+   */
+  template <int dim>
+  class SupportReactions : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+
+  private:
+    /** The recorded (support x dim + component)s: those prescribed at the first row. */
+    std::vector<unsigned int> columns;
+  };
+
   /** Linear momentum of both zones [N s], per component (lumped FE masses, PD particles). */
   template <int dim>
   class LinearMomentum : public Postprocessor<dim>

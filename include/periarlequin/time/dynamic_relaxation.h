@@ -28,6 +28,8 @@ namespace PeriArlequin
     {
       double       tolerance      = 1e-6;
       unsigned int max_iterations = 200000;
+      /** Time between the equilibria of Time/Integration = quasi-static [s]. */
+      double load_step = 0;
       /** Released cracks as given, and as parsed. */
       std::string                released_cracks_text;
       std::vector<PreCrack<dim>> released_cracks;
@@ -50,7 +52,8 @@ namespace PeriArlequin
    * the strain energy U of the blended model), so it follows the slowest mode as the
    * deformation spreads through the body. Converged when the out-of-balance force |M a| of
    * the free components falls below the tolerance times the norm of the applied forces
-   * (loads and support reactions).
+   * (loads and support reactions; the largest of this object's solves, for a sequence of
+   * solves in which the body unloads as it cracks).
    */
   template <int dim>
   class DynamicRelaxation
@@ -81,10 +84,17 @@ namespace PeriArlequin
     Result
     solve(const Progress &progress);
 
-  private:
-    /** |M a| / |F_applied| over all zones (collective). */
+    /** The relaxation's step [s]. */
     double
-    relative_residual() const;
+    get_time_step() const;
+
+  private:
+    /**
+     * |M a| / |F_applied| over all zones, with the largest |F_applied| of this object's
+     * solves so far (collective).
+     */
+    double
+    relative_residual();
     /** exp(-c dt) with c from Rayleigh's quotient of the current displacement (collective). */
     double
     velocity_factor() const;
@@ -96,6 +106,8 @@ namespace PeriArlequin
     std::vector<IntegratedZone *>      zones;
     PredictorCorrector<dim>           &integrator;
     const double                       time_step;
+    /** The largest |F_applied|^2 seen: the scale of the residual once a body unloads. */
+    double largest_applied = 0;
   };
 } // namespace PeriArlequin
 

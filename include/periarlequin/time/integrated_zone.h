@@ -51,7 +51,19 @@ namespace PeriArlequin
     virtual void
     correct(const double dt) = 0;
 
-    /** Work of loads and support reactions over the step just taken (trapezoidal rule). */
+    /**
+     * Remember the displacements and applied forces at which the work of the next interval
+     * starts: before a step, or before a static solve. With @p from_unloaded the interval
+     * starts from zero displacement and force instead: the work of a static solve from the
+     * unloaded body is that of loads raised slowly (half the final force times the
+     * displacement for a linear response), not that of loads applied at once.
+     */
+    virtual void
+    start_work_interval(const bool from_unloaded = false) = 0;
+    /**
+     * Work of loads and support reactions since start_work_interval() (trapezoidal rule:
+     * exact for forces linear in the displacement between the two states).
+     */
     virtual void
     account_work() = 0;
 

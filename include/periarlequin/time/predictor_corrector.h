@@ -53,11 +53,29 @@ namespace PeriArlequin
      * (the loads and prescribed displacements of the current time), without work accounting,
      * after which every velocity is multiplied by @p velocity_factor (the slaves follow): a
      * viscous damping that keeps the coupling's velocity constraint, since both zones'
-     * velocities scale alike. A coupling's multiplier matrix is built for the time step: with
-     * a coupling, @p dt must be it.
+     * velocities scale alike. A coupling's multiplier matrix is built for a time step: with
+     * a coupling, @p dt must be that one (the caller's to ensure: the clock's step may
+     * differ, see advance_clock()).
      */
     void
     relax(const double velocity_factor, const double dt);
+
+    /**
+     * Advance the clock by its step without moving anything: the next loads and prescribed
+     * displacements of a sequence of static solves (whose clock steps by the load step).
+     */
+    void
+    advance_clock();
+
+    /**
+     * Start the work of the zones' applied forces over the next interval (see
+     * IntegratedZone::start_work_interval()).
+     */
+    void
+    start_work_interval(const bool from_unloaded = false);
+    /** Work of loads and support reactions since start_work_interval(), zone by zone. */
+    void
+    account_work();
 
     /** Current time and step number. */
     const DiscreteTime &
@@ -105,9 +123,6 @@ namespace PeriArlequin
      */
     void
     solve_multipliers_and_correct();
-    /** Work of loads and support reactions over the step, zone by zone. */
-    void
-    account_work();
     /** Time @p what in the section "<zone> forces" or "coupling". */
     template <typename Action>
     void
