@@ -313,14 +313,31 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
-  FEZone<dim>::displacement_inertia() const
+  void
+  FEZone<dim>::start_relaxation_step()
   {
-    double local = 0;
-    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      local += mass.local_element(i) * state.displacement.local_element(i) *
-               state.displacement.local_element(i);
-    return Utilities::MPI::sum(local, communicator);
+    relaxation_displacement = state.displacement;
+    relaxation_acceleration = state.acceleration;
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  FEZone<dim>::relaxation_step_sums() const
+  {
+    double     sums[2] = {0, 0};
+    const auto add     = [&](const unsigned int k, const double sign) {
+      const double m  = mass.local_element(k);
+      const double du = state.displacement.local_element(k) - relaxation_displacement.local_element(k);
+      const double da = state.acceleration.local_element(k) - relaxation_acceleration.local_element(k);
+      sums[0] -= sign * m * du * da;
+      sums[1] += sign * m * du * du;
+    };
+    for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
+      add(k, 1.);
+    for (const auto &dof : prescribed)
+      add(dof.local_index, -1.);
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {sums[0], sums[1]};
   }
 
   template <int dim>
@@ -371,7 +388,8 @@ namespace PeriArlequin
   template FEZone<dim>::VectorType       &FEZone<dim>::applied_forces();                         \
   template const FEZone<dim>::VectorType &FEZone<dim>::applied_forces() const;                   \
   template void                           FEZone<dim>::scale_velocities(const double);           \
-  template double                         FEZone<dim>::displacement_inertia() const;             \
+  template void                           FEZone<dim>::start_relaxation_step();                  \
+  template std::pair<double, double>      FEZone<dim>::relaxation_step_sums() const;             \
   template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;
 
   PERIARLEQUIN_INSTANTIATE(2)

@@ -420,15 +420,37 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
-  PDZone<dim>::displacement_inertia() const
+  void
+  PDZone<dim>::start_relaxation_step()
   {
-    const auto u   = state.displacements();
-    double     sum = 0;
+    const auto u = state.displacements(), a = state.accelerations();
+    relaxation_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
+    relaxation_acceleration.assign(a.begin(), a.begin() + ghosts.n_owned());
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  PDZone<dim>::relaxation_step_sums() const
+  {
+    const auto u       = state.displacements();
+    const auto a       = state.accelerations();
+    double     sums[2] = {0, 0};
+    const auto add     = [&](const unsigned int i, const unsigned int d, const double sign) {
+      const double du = u[i][d] - relaxation_displacement[i][d];
+      const double da = a[i][d] - relaxation_acceleration[i][d];
+      sums[0] -= sign * particle_mass(i) * du * da;
+      sums[1] += sign * particle_mass(i) * du * du;
+    };
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       if (!slave[i])
-        sum += particle_mass(i) * (u[i] * u[i]);
-    return Utilities::MPI::sum(sum, communicator);
+        for (unsigned int d = 0; d < dim; ++d)
+          add(i, d, 1.);
+    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
+      if (!slave[i])
+        add(i, d, -1.);
+    });
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return {sums[0], sums[1]};
   }
 
   template <int dim>

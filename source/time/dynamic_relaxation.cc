@@ -87,17 +87,20 @@ namespace PeriArlequin
 
   template <int dim>
   double
-  DynamicRelaxation<dim>::velocity_factor() const
+  DynamicRelaxation<dim>::velocity_factor(const double previous) const
   {
-    double strain_energy = 0, inertia = 0;
+    double stiffness = 0, inertia = 0;
     for (const IntegratedZone *zone : zones)
       {
-        strain_energy += zone->strain_energy();
-        inertia += zone->displacement_inertia();
+        const auto [k, m] = zone->relaxation_step_sums();
+        stiffness += k;
+        inertia += m;
       }
-    if (!(inertia > 0) || !(strain_energy > 0))
-      return 1.;
-    const double omega = std::sqrt(2. * strain_energy / inertia);
+    // A step that did not move, or moved along a softening direction (bonds that gave way),
+    // says nothing of the frequency: the last estimate stays.
+    if (!(inertia > 0) || !(stiffness > 0))
+      return previous;
+    const double omega = std::sqrt(stiffness / inertia);
     return std::exp(-2. * omega * time_step);
   }
 
@@ -137,8 +140,10 @@ namespace PeriArlequin
          iteration < parameters.max_iterations && !(residual <= parameters.tolerance);
          ++iteration)
       {
+        for (IntegratedZone *zone : zones)
+          zone->start_relaxation_step();
         integrator.relax(factor, time_step);
-        factor   = velocity_factor();
+        factor   = velocity_factor(factor);
         residual = relative_residual();
         if (residual < 0.99 * progress_reference)
           {

@@ -173,8 +173,10 @@ namespace PeriArlequin
     external_work() const override;
     void
     scale_velocities(const double factor) override;
-    double
-    displacement_inertia() const override;
+    void
+    start_relaxation_step() override;
+    std::pair<double, double>
+    relaxation_step_sums() const override;
     std::pair<double, double>
     squared_force_norms() const override;
 
@@ -353,6 +355,8 @@ namespace PeriArlequin
     VectorType                 internal_force, applied_force;
     VectorType                 previous_applied_force;
     VectorType                 previous_displacement;
+    /** Displacement and acceleration before a relaxation step. */
+    VectorType relaxation_displacement, relaxation_acceleration;
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */

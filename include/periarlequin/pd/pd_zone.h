@@ -186,8 +186,10 @@ namespace PeriArlequin
     external_work() const override;
     void
     scale_velocities(const double factor) override;
-    double
-    displacement_inertia() const override;
+    void
+    start_relaxation_step() override;
+    std::pair<double, double>
+    relaxation_step_sums() const override;
     std::pair<double, double>
     squared_force_norms() const override;
     /**
@@ -662,6 +664,8 @@ namespace PeriArlequin
     std::vector<std::uint8_t> traction_faces;
     /** Applied force (loads plus support reactions) of owned particles [N]. */
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
+    /** Displacements and accelerations of the owned particles before a relaxation step. */
+    std::vector<Tensor<1, dim>> relaxation_displacement, relaxation_acceleration;
     double                      work        = 0;
     bool                        tracks_work = false;
     /** See suspend_fracture(). */

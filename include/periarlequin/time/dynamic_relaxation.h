@@ -48,9 +48,12 @@ namespace PeriArlequin
    * adaptive dynamic relaxation: the explicit steps of the time loop (the same forces, the
    * same coupling and multipliers) with the clock held, the velocities damped after each
    * step by exp(-c dt). The damping c = 2 omega is critical for the frequency omega^2 =
-   * u^T K u / u^T M u = 2 U / u^T M u of the current displacement (Rayleigh's quotient, with
-   * the strain energy U of the blended model), so it follows the slowest mode as the
-   * deformation spreads through the body. Converged when the out-of-balance force |M a| of
+   * du^T K du / du^T M du of the last step's motion du (the local Rayleigh quotient, K du
+   * = -M da from the change of acceleration over the step, so it holds for the coupled,
+   * blended model too), so it follows the slowest mode as the motion settles into it. The
+   * quotient of the step, not of the whole displacement: a displacement that is mostly a
+   * stress-free motion (a part that a grip carries, once cracked off) would give omega near
+   * 0 and no damping. Converged when the out-of-balance force |M a| of
    * the free components falls below the tolerance times the norm of the applied forces
    * (loads and support reactions; the largest of this object's solves, for a sequence of
    * solves in which the body unloads as it cracks).
@@ -95,9 +98,12 @@ namespace PeriArlequin
      */
     double
     relative_residual();
-    /** exp(-c dt) with c from Rayleigh's quotient of the current displacement (collective). */
+    /**
+     * exp(-c dt) with c from the local Rayleigh quotient of the last step's motion, or
+     * @p previous where the step gives none (collective).
+     */
     double
-    velocity_factor() const;
+    velocity_factor(const double previous) const;
 
     /** Iterations without a 1 % fall of the least residual after which a solve has stalled. */
     static constexpr unsigned int stall_iterations = 10000;

@@ -83,9 +83,17 @@ namespace PeriArlequin
      */
     virtual void
     scale_velocities(const double factor) = 0;
-    /** Sum of m |u|^2 over the nodes that carry mass: u^T M u for a Rayleigh quotient [kg m^2]. */
-    virtual double
-    displacement_inertia() const = 0;
+    /** Dynamic relaxation: keep the displacements and accelerations before a step. */
+    virtual void
+    start_relaxation_step() = 0;
+    /**
+     * Dynamic relaxation, after the step: over the components that are neither prescribed
+     * nor slaves, the sums of -m du . da and m du . du, du and da the changes of
+     * displacement and acceleration over the step: du^T K du and du^T M du, the local
+     * Rayleigh quotient of the motion the damping acts on [N m, kg m^2] (collective).
+     */
+    virtual std::pair<double, double>
+    relaxation_step_sums() const = 0;
     /**
      * For the convergence of a static solve, the squared norms of the out-of-balance force
      * M a over the components that are not prescribed, and of the applied forces (loads and

@@ -1,0 +1,165 @@
+/**
+ * Time/Integration = quasi-static: load-controlled crack growth in a standard specimen.
+ *
+ * A middle-tension specimen M(T) in pure PD: a glass plate (plane stress, E = 72 GPa,
+ * G0 = 3.8 J/m^2) W = 40 mm wide and 80 mm high with a centre crack 2a = 12 mm, pulled by
+ * its y faces (grips that prescribe u_y = +-u(t), free in x) in increments of 2 % of the
+ * LEFM failure load, from 80 % of it. dx = 0.5 mm, horizon 1.6 mm.
+ *
+ * 1. Before any bond breaks the path is elastic and quasi-static: the work of the grips
+ *    (trapezoid between equilibria, exact for a linear response) equals the strain energy.
+ *    Tolerance 1e-3: the work is first order in the displacement error the relaxation's
+ *    tolerance (1e-5 of the grip force) leaves, the energy second order; measured 5e-4,
+ *    and 5e-6 at a tolerance of 1e-7 (it scales with the tolerance).
+ * 2. The peak grip force against LEFM: K_I = sigma sqrt(pi a) sqrt(sec(pi a / W))
+ *    (Feddersen's width correction, within 0.3 % of the exact M(T) calibration for
+ *    2a/W = 0.3) reaches K_Ic = sqrt(E G0) at sigma_c W = 143.8 kN/m. Tolerance 10 %: the
+ *    critical-stretch PD crack has a process zone of a horizon, here a quarter of a; the
+ *    measured ratio is 1.068.
+ * 3. Growth is stable for a while: bonds break at two or more increments while the force
+ *    still rises, before the peak (the PD process zone gives a short rising resistance);
+ *    then the crack runs through and the grips carry less than 1 % of the peak.
+ * 4. The energy dissipated, work minus strain energy at the end, is at least G0 times the
+ *    new crack length W - 2a (the relaxation also dissipates what the unstable run
+ *    released beyond G0).
+ * 5. On 2 ranks: the same bonds break at the same increments as on rank 0 alone, and the
+ *    grip force agrees within 1e-4 of the peak (the ranks sum in another order: the
+ *    relaxations stop an iteration apart, within their tolerance 1e-5).
+ */
+#include <periarlequin/simulator.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "../tests.h"
+
+using namespace PeriArlequinTests;
+
+namespace
+{
+  constexpr double E = 72e9, G0 = 3.8, width = 0.04, height = 0.08, half_crack = 0.006;
+
+  /** The LEFM failure load of the specimen per unit thickness [N/m]. */
+  double
+  lefm_failure_load()
+  {
+    const double toughness = std::sqrt(E * G0);
+    const double shape     = std::sqrt(1. / std::cos(numbers::PI * half_crack / width));
+    return toughness / (std::sqrt(numbers::PI * half_crack) * shape) * width;
+  }
+
+  std::string
+  specimen_text()
+  {
+    // The grip displacement at which the LEFM load is reached, with the plate's stiffness
+    // E W / H (the crack adds about 6 %): increments of 2 % of it from 80 %.
+    const double       grip = 0.5 * lefm_failure_load() / (E * width) * height;
+    std::ostringstream motion;
+    motion << grip << " * (0.8 + 0.02 * t)";
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " << width << ", "
+         << height << "\n  set Subdivisions = 8, 16\nend\n"
+         << "subsection Material\n  set Young's modulus = " << E
+         << "\n  set Poisson's ratio = 0.22\n  set Density = 2440\n"
+         << "  set Two-dimensional model = plane stress\nend\n"
+         << "subsection Peridynamics\n  set Region = 0, 0 : " << width << ", " << height
+         << "\n  set Lattice spacing = 5e-4\n  set Horizon factor = 3.2\n  set Fracture = true\n"
+         << "  set Critical energy release rate = " << G0
+         << "\n  set Pre-cracks = " << 0.5 * width - half_crack << ", " << 0.5 * height << " : "
+         << 0.5 * width + half_crack << ", " << 0.5 * height << "\nend\n"
+         << "subsection Boundary conditions\n";
+    for (const unsigned int id : {2, 3})
+      text << "  subsection Boundary " << id
+           << "\n    set Type = displacement\n    set Components = y\n"
+           << "    subsection Function\n      set Function expression = 0; " << (id == 2 ? "-" : "")
+           << motion.str() << "\n    end\n  end\n";
+    text << "end\n"
+         << "subsection Time\n  set Integration = quasi-static\n  set Time step = 1e-8\n"
+         << "  set End time = 18\nend\n"
+         << "subsection Static solve\n  set Tolerance = 1e-5\n  set Load step = 1\nend\n"
+         << quiet_output()
+         << "subsection Postprocess\n  set List of postprocessors = energies, support "
+            "reactions\nend\n";
+    return text.str();
+  }
+
+  void
+  middle_tension()
+  {
+    const std::string text     = specimen_text();
+    auto              specimen = make_simulator<2>(text);
+    specimen->run();
+    const auto &history = specimen->get_energy_history();
+    const auto  force   = history.column("reaction_boundary3_y");
+    const auto  broken  = history.column("broken_bonds");
+    const auto  work    = history.column("external_work");
+    const auto  strain  = history.column("strain_energy");
+
+    // 1. The elastic path.
+    double       energy_error = 0;
+    unsigned int first_break  = 0;
+    while (first_break < broken.size() && broken[first_break] == broken.front())
+      {
+        energy_error =
+          std::max(energy_error,
+                   std::abs(work[first_break] - strain[first_break]) / strain[first_break]);
+        ++first_break;
+      }
+    check_below("elastic increments: |work - strain energy| / strain energy", energy_error, 1e-3);
+
+    // 2. The peak.
+    const auto         peak     = std::max_element(force.begin(), force.end());
+    const unsigned int peak_row = peak - force.begin();
+    check("peak grip force over the LEFM failure load", *peak / lefm_failure_load(), 1., 0.1);
+
+    // 3. Stable growth, then through.
+    unsigned int growing = 0;
+    for (unsigned int n = 1; n <= peak_row; ++n)
+      if (broken[n] > broken[n - 1])
+        ++growing;
+    check_above("increments with breaking bonds up to the peak", growing, 1.5);
+    check_below("grip force at the end over the peak", force.back() / *peak, 0.01);
+
+    // 4. The energy of the new crack.
+    const double new_crack = width - 2. * half_crack;
+    check_above("dissipated energy over G0 (W - 2a)",
+                (work.back() - strain.back()) / (G0 * new_crack),
+                1.);
+
+    // 5. All ranks against rank 0 alone.
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      {
+        double bonds = 0, forces = 0;
+        if (is_root())
+          {
+            auto serial = make_simulator<2>(text, MPI_COMM_SELF);
+            serial->run();
+            bonds  = largest_column_difference(history,
+                                              serial->get_energy_history(),
+                                              {"broken_bonds"},
+                                              false);
+            forces = largest_column_difference(history,
+                                               serial->get_energy_history(),
+                                               {"reaction_boundary3_y"},
+                                               true);
+          }
+        check("broken bond ends, all ranks - rank 0 alone",
+              Utilities::MPI::max(bonds, MPI_COMM_WORLD),
+              0,
+              0);
+        check_below("grip force, all ranks - rank 0 alone, over the peak",
+                    Utilities::MPI::max(forces, MPI_COMM_WORLD),
+                    1e-4);
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  return run_test(argc, argv, [] { middle_tension(); });
+}
