@@ -23,6 +23,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <cstdint>
 #include <memory>
 
 namespace PeriArlequin
@@ -356,6 +357,8 @@ namespace PeriArlequin
     Parameters::StaticSolve<dim> static_parameters;
     /** Has the static solve of Time/Integration run? */
     bool static_solved = false;
+    /** Relaxation steps of this run's static solves (each also evaluates the forces). */
+    std::uint64_t relaxation_steps = 0;
     /** Has a quasi-static run solved for the loads of t = 0? */
     bool quasi_static_started = false;
     /** The relaxation of static and quasi-static solves (created at the first). */

@@ -58,8 +58,15 @@ namespace PeriArlequin
       write_checkpoint();
     const double loop_time = wall_clock.wall_time();
     check_finite(kinetic_energy());
-    const unsigned int steps_run = n_steps - first_step;
-    pcout << "Time loop: " << steps_run << " steps in " << loop_time << " s";
+    // A quasi-static run's work is its relaxation steps.
+    const bool quasi_static = time_parameters.integration == Parameters::Integration::quasi_static;
+    const std::uint64_t steps_run =
+      quasi_static ? relaxation_steps : static_cast<std::uint64_t>(n_steps - first_step);
+    if (quasi_static)
+      pcout << "Quasi-static: " << n_steps - first_step << " increments, " << steps_run
+            << " relaxation steps in " << loop_time << " s";
+    else
+      pcout << "Time loop: " << steps_run << " steps in " << loop_time << " s";
     if (fe_zone)
       pcout << ", " << static_cast<double>(fe_zone->n_dofs()) * steps_run / loop_time
             << " FE DoF-steps/s";
@@ -84,6 +91,9 @@ namespace PeriArlequin
                                        std::max(time_parameters.time_step, 0.9 * stable_time_step);
         relaxation =
           std::make_unique<DynamicRelaxation<dim>>(static_parameters, zones, *integrator, step);
+        // A checkpoint of a quasi-static run holds an equilibrium.
+        if (resumed)
+          relaxation->remember_equilibrium();
       }
     if (pd_zone)
       pd_zone->suspend_fracture(true);
@@ -103,6 +113,7 @@ namespace PeriArlequin
     });
     if (pd_zone)
       pd_zone->suspend_fracture(false);
+    relaxation_steps += result.iterations + 1;
     return result;
   }
 
@@ -201,6 +212,7 @@ namespace PeriArlequin
           // bonds beyond their limit in the equilibrium (it moves nothing but by dt^2/2
           // times the residual acceleration).
           integrator->relax(0., relaxation->get_time_step());
+          ++relaxation_steps;
           const std::size_t now = pd_zone->n_global_broken_bonds();
           if (now == broken)
             break;

@@ -19,9 +19,9 @@ namespace PeriArlequin
                   "converged "
                   "when the out-of-balance force |M a| of the components that are not "
                   "prescribed is at most this fraction of the norm of the applied forces "
-                  "(loads and support reactions; in a quasi-static run the largest norm "
-                  "reached so far, so that a body that cracks through and unloads still "
-                  "converges); in [1e-12, 1) [-].");
+                  "(loads and support reactions; in a quasi-static run at least the largest "
+                  "norm of the equilibria before, so that a body that cracks through and "
+                  "unloads still converges); in [1e-12, 1) [-].");
       entries.add("Maximum iterations",
                   max_iterations,
                   Patterns::Integer(1),
@@ -105,8 +105,8 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
-  DynamicRelaxation<dim>::relative_residual()
+  std::pair<double, double>
+  DynamicRelaxation<dim>::squared_force_norms() const
   {
     double residual = 0, applied = 0;
     for (const IntegratedZone *zone : zones)
@@ -115,9 +115,24 @@ namespace PeriArlequin
         residual += r;
         applied += f;
       }
-    largest_applied = std::max(largest_applied, applied);
+    return {residual, applied};
+  }
+
+  template <int dim>
+  double
+  DynamicRelaxation<dim>::relative_residual() const
+  {
+    const auto [residual, applied] = squared_force_norms();
+    const double reference         = std::max(largest_equilibrium_force, applied);
     // Without loads the equilibrium is the unloaded body: the residual is measured absolutely.
-    return largest_applied > 0 ? std::sqrt(residual / largest_applied) : std::sqrt(residual);
+    return reference > 0 ? std::sqrt(residual / reference) : std::sqrt(residual);
+  }
+
+  template <int dim>
+  void
+  DynamicRelaxation<dim>::remember_equilibrium()
+  {
+    largest_equilibrium_force = std::max(largest_equilibrium_force, squared_force_norms().second);
   }
 
   template <int dim>
@@ -190,6 +205,7 @@ namespace PeriArlequin
       }
     // At rest in the equilibrium found.
     integrator.relax(0., time_step);
+    remember_equilibrium();
     return {iteration, relative_residual()};
   }
 

@@ -55,8 +55,8 @@ namespace PeriArlequin
    * stress-free motion (a part that a grip carries, once cracked off) would give omega near
    * 0 and no damping. Converged when the out-of-balance force |M a| of
    * the free components falls below the tolerance times the norm of the applied forces
-   * (loads and support reactions; the largest of this object's solves, for a sequence of
-   * solves in which the body unloads as it cracks).
+   * (loads and support reactions; at least the largest of the equilibria found before, for
+   * a sequence of solves in which the body unloads as it cracks).
    */
   template <int dim>
   class DynamicRelaxation
@@ -87,17 +87,28 @@ namespace PeriArlequin
     Result
     solve(const Progress &progress);
 
+    /**
+     * Count the current state's applied forces among those of the equilibria found, the
+     * scale of later residuals: solve() does so at its end, and a run resumed from a
+     * checkpoint of an equilibrium before its first solve (collective).
+     */
+    void
+    remember_equilibrium();
+
     /** The relaxation's step [s]. */
     double
     get_time_step() const;
 
   private:
+    /** |M a|^2 and |F_applied|^2 over all zones (collective). */
+    std::pair<double, double>
+    squared_force_norms() const;
     /**
-     * |M a| / |F_applied| over all zones, with the largest |F_applied| of this object's
-     * solves so far (collective).
+     * |M a| / |F_applied| over all zones, |F_applied| at least the largest of the
+     * equilibria so far (collective).
      */
     double
-    relative_residual();
+    relative_residual() const;
     /**
      * exp(-c dt) with c from the local Rayleigh quotient of the last step's motion, or
      * @p previous where the step gives none (collective).
@@ -112,8 +123,11 @@ namespace PeriArlequin
     std::vector<IntegratedZone *>      zones;
     PredictorCorrector<dim>           &integrator;
     const double                       time_step;
-    /** The largest |F_applied|^2 seen: the scale of the residual once a body unloads. */
-    double largest_applied = 0;
+    /**
+     * The largest |F_applied|^2 of the equilibria found: the scale of the residual once a
+     * body unloads (not of the transients of a relaxation, which a resumed run has not seen).
+     */
+    double largest_equilibrium_force = 0;
   };
 } // namespace PeriArlequin
 
