@@ -175,7 +175,9 @@ namespace PeriArlequin
                     << stall_iterations << " iterations; it is " << residual
                     << " times the applied forces (least " << smallest
                     << "), above Static solve/Tolerance = " << parameters.tolerance
-                    << ". Use a tolerance above the residual reached.";
+                    << ". Use a tolerance above the residual reached; a residual far above it "
+                       "means a part that has no equilibrium (cracked off under a load: "
+                       "drive a specimen by a prescribed displacement).";
             AssertThrow(false, ExcMessage(message.str()));
           }
         // A residual that grows by orders of magnitude beyond the least seen does not
