@@ -326,9 +326,11 @@ namespace PeriArlequin
   {
     double     sums[2] = {0, 0};
     const auto add     = [&](const unsigned int k, const double sign) {
-      const double m  = mass.local_element(k);
-      const double du = state.displacement.local_element(k) - relaxation_displacement.local_element(k);
-      const double da = state.acceleration.local_element(k) - relaxation_acceleration.local_element(k);
+      const double m = mass.local_element(k);
+      const double du =
+        state.displacement.local_element(k) - relaxation_displacement.local_element(k);
+      const double da =
+        state.acceleration.local_element(k) - relaxation_acceleration.local_element(k);
       sums[0] -= sign * m * du * da;
       sums[1] += sign * m * du * du;
     };

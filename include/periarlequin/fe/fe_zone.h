@@ -349,14 +349,14 @@ namespace PeriArlequin
     CellPredicate                                                             fe_cells;
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>> solution_transfer;
 
-    const ProblemData<dim>    *problem_data = nullptr;
-    double                     time_step    = 0;
-    State                      state;
-    VectorType                 internal_force, applied_force;
-    VectorType                 previous_applied_force;
-    VectorType                 previous_displacement;
+    const ProblemData<dim> *problem_data = nullptr;
+    double                  time_step    = 0;
+    State                   state;
+    VectorType              internal_force, applied_force;
+    VectorType              previous_applied_force;
+    VectorType              previous_displacement;
     /** Displacement and acceleration before a relaxation step. */
-    VectorType relaxation_displacement, relaxation_acceleration;
+    VectorType                 relaxation_displacement, relaxation_acceleration;
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */
