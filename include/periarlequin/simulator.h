@@ -118,9 +118,9 @@ namespace PeriArlequin
      * Time/Integration = quasi-static: the clock on by Static solve/Load step (at the first
      * call, which run() makes, it stays at t = 0), the equilibrium under its loads, then rounds of
      * bond breaking (the bonds beyond their limit at equilibrium break together) each followed by a
-     * new equilibrium, until a round breaks none. Returns the rounds that broke bonds.
+     * new equilibrium, until a round breaks none.
      */
-    unsigned int
+    void
     solve_increment();
 
     /**

@@ -182,13 +182,14 @@ namespace PeriArlequin
   {
     if (!tracks_work)
       return;
-    previous_displacement  = state.displacement;
-    previous_applied_force = applied_force;
     if (from_unloaded)
       {
         previous_displacement  = 0.;
         previous_applied_force = 0.;
+        return;
       }
+    previous_displacement  = state.displacement;
+    previous_applied_force = applied_force;
   }
 
   template <int dim>

@@ -238,12 +238,15 @@ namespace PeriArlequin
   {
     if (!tracks_work)
       return;
+    if (from_unloaded)
+      {
+        previous_displacement.assign(ghosts.n_owned(), Tensor<1, dim>());
+        previous_applied_force.assign(applied_force.size(), Tensor<1, dim>());
+        return;
+      }
     const auto u = state.displacements();
     previous_displacement.assign(u.begin(), u.begin() + ghosts.n_owned());
     previous_applied_force = applied_force;
-    if (from_unloaded)
-      for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-        previous_displacement[i] = previous_applied_force[i] = Tensor<1, dim>();
   }
 
   template <int dim>

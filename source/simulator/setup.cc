@@ -202,12 +202,11 @@ namespace PeriArlequin
           << MultithreadInfo::n_threads() << " thread(s)\n"
           << "  time step " << dt << " s";
     if (time_parameters.integration == Parameters::Integration::quasi_static)
-      pcout << ", quasi-static: " << n_steps << " load increments of " << clock_step() << " s to ";
+      pcout << ", quasi-static: " << n_steps << " load increments of " << clock_step() << " s to "
+            << time_parameters.end_time << " s";
     else
-      pcout << " (" << n_steps << " steps to ";
-    pcout << time_parameters.end_time << " s"
-          << (time_parameters.integration == Parameters::Integration::quasi_static ? "" : ")")
-          << ", estimated stable step " << stable_time_step << " s, longitudinal wave speed "
+      pcout << " (" << n_steps << " steps to " << time_parameters.end_time << " s)";
+    pcout << ", estimated stable step " << stable_time_step << " s, longitudinal wave speed "
           << material.longitudinal_wave_speed(dim) << " m/s" << std::endl;
     if (pd_zone)
       print_pd_summary();

@@ -192,7 +192,7 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  unsigned int
+  void
   Simulator<dim>::solve_increment()
   {
     // The first solve, for the loads of t = 0, starts from the unloaded body.
@@ -228,7 +228,6 @@ namespace PeriArlequin
                              "")
             << std::endl;
     integrator->account_work();
-    return rounds;
   }
 
   template <int dim>
