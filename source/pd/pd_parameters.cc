@@ -38,6 +38,29 @@ namespace PeriArlequin
       entries.add_components("Components", components, dim, "Prescribed components.");
     }
 
+    void
+    ParticleContact::entries(ParameterEntries &entries)
+    {
+      entries.add("Enable",
+                  enabled,
+                  Patterns::Bool(),
+                  "Push apart PD particles that come closer than the contact distance and are "
+                  "not joined by an intact bond: crack faces closing, fragments, separate "
+                  "bodies. Acts between particles outside the overlap (alpha = 0).");
+      entries.add("Distance factor",
+                  distance_factor,
+                  Patterns::Double(),
+                  "Contact distance d_c over the lattice spacing, in (0, 1) [-]: below 1 so that "
+                  "neighbours at rest do not touch; a pair closer than d_c repels.");
+      entries.add("Stiffness factor",
+                  stiffness_factor,
+                  Patterns::Double(),
+                  "Pair stiffness k over E dx^(dim-2), > 0 [-]: the force between two particles "
+                  "at distance r < d_c is k (d_c - r) [N, per unit thickness in 2D]. With 1 a "
+                  "touching pair is as stiff as a column of the material dx long and dx^(dim-1) "
+                  "in section; the estimated stable step accounts for it.");
+    }
+
     template <int dim>
     void
     Peridynamics<dim>::entries(ParameterEntries &entries)
@@ -126,6 +149,7 @@ namespace PeriArlequin
                                        "Prescribed displacement [m] or velocity [m/s].");
           prm.leave_subsection();
         }
+      ParameterEntries::declare<ParticleContact>(prm, "Particle contact");
       prm.leave_subsection();
     }
 
@@ -145,6 +169,7 @@ namespace PeriArlequin
           parse_vector_function(prm, "Peridynamics/" + name + "/", "Function", *p.function);
           prm.leave_subsection();
         }
+      ParameterEntries::parse(prm, "Particle contact", contact, "Peridynamics/");
       prm.leave_subsection();
 
       if (region.empty())
@@ -155,6 +180,18 @@ namespace PeriArlequin
         throw_invalid_parameter("Peridynamics/Horizon factor",
                                 horizon_factor,
                                 "a value >= 1 (the horizon spans at least one lattice spacing)");
+      if (contact.enabled)
+        {
+          if (!(contact.distance_factor > 0 && contact.distance_factor < 1))
+            throw_invalid_parameter("Peridynamics/Particle contact/Distance factor",
+                                    contact.distance_factor,
+                                    "a value in (0, 1): at 1 or more, lattice neighbours at rest "
+                                    "would already push apart");
+          if (!(contact.stiffness_factor > 0 && contact.stiffness_factor <= 1e3))
+            throw_invalid_parameter("Peridynamics/Particle contact/Stiffness factor",
+                                    contact.stiffness_factor,
+                                    "a value in (0, 1000]");
+        }
     }
   } // namespace Parameters
   namespace Parameters

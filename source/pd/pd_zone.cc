@@ -68,6 +68,9 @@ namespace PeriArlequin
                                     "'Geometry/Upper corner'");
         }
     bonds.build_stencil(dx, parameters.horizon());
+    if (parameters.contact.enabled)
+      contact = std::make_unique<ParticleContact<dim>>(
+        parameters.contact, dx, parameters.horizon(), material.youngs_modulus, communicator);
   }
 
   template <int dim>
@@ -192,6 +195,8 @@ namespace PeriArlequin
     find_boundary_layers();
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator) || !settling_force.empty();
+    if (contact)
+      contact->invalidate();
   }
 
   template <int dim>
@@ -527,6 +532,20 @@ namespace PeriArlequin
   PDZone<dim>::get_critical_stretch() const
   {
     return fracture ? fracture->critical_stretch() : 0.;
+  }
+
+  template <int dim>
+  const ParticleContact<dim> *
+  PDZone<dim>::get_particle_contact() const
+  {
+    return contact.get();
+  }
+
+  template <int dim>
+  unsigned int
+  PDZone<dim>::n_touching_particles() const
+  {
+    return contact ? Utilities::MPI::sum(contact->n_touching(), communicator) : 0;
   }
 
   template <int dim>

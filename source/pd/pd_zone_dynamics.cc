@@ -47,6 +47,15 @@ namespace PeriArlequin
                           state_weight,
                           force_density,
                           energy_density);
+    if (contact)
+      contact->add_forces(bonds,
+                          ghosts.reference_positions(),
+                          ghosts.ids(),
+                          make_array_view(alpha),
+                          state.displacements(),
+                          particle_volume(),
+                          force_density,
+                          energy_density);
     for (const unsigned int i : unforced)
       {
         force_density[i]  = Tensor<1, dim>();
@@ -350,6 +359,9 @@ namespace PeriArlequin
     AssertThrow(eigenvalue > 0,
                 ExcMessage("The PD stable-step estimate found no positive eigenvalue: does "
                            "the PD zone have bonds?"));
+    // The operator was probed at rest, where no pair touches: contact adds its bound.
+    if (contact)
+      eigenvalue += contact->eigenvalue_bound(material.density * particle_volume());
     return 2. / std::sqrt(eigenvalue);
   }
 

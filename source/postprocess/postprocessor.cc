@@ -107,6 +107,19 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  ParticleContactHistory<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
+  {
+    const PDZone<dim>          *pd      = simulator.get_pd_zone();
+    const ParticleContact<dim> *contact = pd ? pd->get_particle_contact() : nullptr;
+    history.add_value("touching_particles", pd ? pd->n_touching_particles() : 0);
+    history.add_value("contact_energy",
+                      contact ? Utilities::MPI::sum(contact->local_energy(),
+                                                    pd->get_communicator()) :
+                                0.);
+  }
+
+  template <int dim>
+  void
   ContactForces<dim>::execute(const Simulator<dim> &simulator, EnergyHistory &history)
   {
     const Contact<dim> *contact = simulator.get_contact();
@@ -363,6 +376,8 @@ namespace PeriArlequin
   template class BondStretches<3>;
   template class ContactForces<2>;
   template class ContactForces<3>;
+  template class ParticleContactHistory<2>;
+  template class ParticleContactHistory<3>;
   template class Probes<2>;
   template class Probes<3>;
   template class LinearMomentum<2>;
@@ -389,6 +404,9 @@ namespace PeriArlequin
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(ContactForces,
                                       "contact forces",
                                       "total contact force on the body and nodes in contact")
+  PERIARLEQUIN_REGISTER_POSTPROCESSOR(ParticleContactHistory,
+                                      "particle contact",
+                                      "PD particles touching another and the contact potential")
   PERIARLEQUIN_REGISTER_POSTPROCESSOR(Probes,
                                       "probes",
                                       "velocity at points (FE field, or the nearest PD particle "

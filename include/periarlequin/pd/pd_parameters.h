@@ -37,6 +37,22 @@ namespace PeriArlequin
       entries(ParameterEntries &entries);
     };
 
+    /**
+     * Short-range repulsion between PD particles that no intact bond joins (crack faces,
+     * fragments, separate bodies): a pair closer than d_c pushes apart with k (d_c - r).
+     */
+    struct ParticleContact
+    {
+      bool enabled = false;
+      /** d_c / dx [-]. */
+      double distance_factor = 0.9;
+      /** k / (E dx^(dim-2)) [-]. */
+      double stiffness_factor = 1.;
+
+      void
+      entries(ParameterEntries &entries);
+    };
+
     /** The peridynamic zone: where, how fine, which model, fracture, particle conditions. */
     template <int dim>
     struct Peridynamics
@@ -57,6 +73,7 @@ namespace PeriArlequin
       std::vector<PreCrack<dim>> pre_cracks;
       Region<dim>                no_fail_region;
       std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
+      ParticleContact                                                 contact;
 
       void
       entries(ParameterEntries &entries);

@@ -9,6 +9,7 @@
 #include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
 #include <periarlequin/pd/material_model.h>
+#include <periarlequin/pd/particle_contact.h>
 #include <periarlequin/pd/particle_state.h>
 #include <periarlequin/pd/pd_parameters.h>
 #include <periarlequin/pd/prescribed_particles.h>
@@ -228,6 +229,12 @@ namespace PeriArlequin
     /** The fracture criterion's critical stretch (0 without fracture). */
     double
     get_critical_stretch() const;
+    /** The contact between particles (Peridynamics/Particle contact), or nullptr if off. */
+    const ParticleContact<dim> *
+    get_particle_contact() const;
+    /** Particles of all ranks that touched another in the last force evaluation. */
+    unsigned int
+    n_touching_particles() const;
     MPI_Comm
     get_communicator() const;
     const Parameters::Peridynamics<dim> &
@@ -608,6 +615,7 @@ namespace PeriArlequin
     BondFamilies<dim>                       bonds;
     std::unique_ptr<PDMaterialModel<dim>>   model;
     std::unique_ptr<FractureCriterion<dim>> fracture;
+    std::unique_ptr<ParticleContact<dim>>   contact;
     PrescribedParticles<dim>                prescribed;
     SiteFilter                              extent;
     /** The pure PD region (Peridynamics/Region, grown by set_region()). */

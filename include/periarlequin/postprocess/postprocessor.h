@@ -123,6 +123,19 @@ namespace PeriArlequin
   };
 
   /**
+   * Contact between PD particles (Peridynamics/Particle contact): the particles touching
+   * another and the contact potential [J; J/m in 2D], part of the strain energy; zeros
+   * without it.
+   */
+  template <int dim>
+  class ParticleContactHistory : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const Simulator<dim> &simulator, EnergyHistory &history) override;
+  };
+
+  /**
    * Velocity histories at points (Postprocess/probes/Points) [m/s], per component: where an
    * FE cell holds the point (the FE zone and the overlaps), the FE field there; elsewhere
    * (the pure PD zone) the nearest PD particle, the lowest in (z, y, x) among equally near

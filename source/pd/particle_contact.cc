@@ -1,0 +1,266 @@
+#include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/base/parameters.h>
+#include <periarlequin/pd/particle_contact.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <utility>
+
+namespace PeriArlequin
+{
+  template <int dim>
+  ParticleContact<dim>::ParticleContact(const Parameters::ParticleContact &parameters,
+                                        const double                       lattice_spacing,
+                                        const double                       horizon,
+                                        const double                       youngs_modulus,
+                                        const MPI_Comm                     communicator)
+    : contact_distance(parameters.distance_factor * lattice_spacing)
+    // The list reaches half-way to the lattice spacing (at most 0.1 dx beyond d_c): at rest
+    // it holds no pair of lattice neighbours.
+    , skin(std::min(0.5 * (lattice_spacing - contact_distance), 0.1 * lattice_spacing))
+    , pair_stiffness(parameters.stiffness_factor * youngs_modulus *
+                     std::pow(lattice_spacing, dim - 2))
+    , horizon(horizon)
+    , communicator(communicator)
+  {}
+
+  template <int dim>
+  void
+  ParticleContact<dim>::invalidate()
+  {
+    list_current = false;
+  }
+
+  template <int dim>
+  double
+  ParticleContact<dim>::eigenvalue_bound(const double particle_mass) const
+  {
+    return 2. * (2. * (dim - 1)) * pair_stiffness / particle_mass;
+  }
+
+  template <int dim>
+  void
+  ParticleContact<dim>::check_partners_held(const double largest_displacement) const
+  {
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1 ||
+        2. * largest_displacement + contact_distance <= horizon)
+      return;
+    std::ostringstream message;
+    message << "Particle contact on several ranks: a particle has moved " << largest_displacement
+            << " m, so two particles that started more than a horizon apart (delta = " << horizon
+            << " m) may now be closer than the contact distance " << contact_distance
+            << " m while no rank holds both (a rank holds the particles within a horizon of "
+               "its own, in the reference configuration). Contact is partition-independent "
+               "while every displacement stays below (delta - d_c)/2 = "
+            << 0.5 * (horizon - contact_distance)
+            << " m; run this case on one rank, or with a larger 'Peridynamics/Horizon factor'.";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+
+  template <int dim>
+  bool
+  ParticleContact<dim>::list_outdated(ArrayView<const Tensor<1, dim>> displacement,
+                                      const unsigned int              n_owned) const
+  {
+    const bool comparable = list_current && displacement_at_build.size() == displacement.size();
+    std::array<double, 2> largest = {{0., 0.}};
+    if (comparable)
+      for (unsigned int i = 0; i < displacement.size(); ++i)
+        largest[0] =
+          std::max(largest[0], (displacement[i] - displacement_at_build[i]).norm_square());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      largest[1] = std::max(largest[1], displacement[i].norm_square());
+    Utilities::MPI::max(ArrayView<const double>(largest.data(), 2),
+                        communicator,
+                        ArrayView<double>(largest.data(), 2));
+    check_partners_held(std::sqrt(largest[1]));
+    return !comparable || std::sqrt(largest[0]) > 0.5 * skin;
+  }
+
+  namespace
+  {
+    /**
+     * The stored bond joining held particles @p i (owned) and @p j, or @p none: a bond between
+     * two owned particles is stored at the lower local index, one to a ghost at the owned end.
+     */
+    template <int dim>
+    std::size_t
+    stored_bond(const BondFamilies<dim> &bonds,
+                const unsigned int       i,
+                const unsigned int       j,
+                const std::size_t        none)
+    {
+      const bool         at_j  = j < bonds.n_owned && j < i;
+      const unsigned int owner = at_j ? j : i, other = at_j ? i : j;
+      for (std::size_t n = bonds.family_begin[owner]; n < bonds.family_begin[owner + 1]; ++n)
+        if (bonds.neighbor(owner, n) == other)
+          return n;
+      return none;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ParticleContact<dim>::build_list(const BondFamilies<dim>               &bonds,
+                                   ArrayView<const Point<dim>>            reference_position,
+                                   ArrayView<const types::particle_index> ids,
+                                   ArrayView<const double>                alpha,
+                                   ArrayView<const Tensor<1, dim>>        displacement)
+  {
+    const unsigned int      n_total = reference_position.size(), n_owned = bonds.n_owned;
+    const double            cutoff = contact_distance + skin;
+    std::vector<Point<dim>> position(n_total);
+    Point<dim>              lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = std::numeric_limits<double>::lowest();
+      }
+    for (unsigned int i = 0; i < n_total; ++i)
+      {
+        position[i] = reference_position[i] + displacement[i];
+        if (alpha[i] == 0)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], position[i][d]);
+              upper[d] = std::max(upper[d], position[i][d]);
+            }
+      }
+
+    // Bins of edge `cutoff` over the particles outside the overlap, as (key, particle) sorted
+    // by key: a pair closer than the cutoff lies in the same or in neighbouring bins.
+    std::array<std::int64_t, dim> n_bins;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_bins[d] = upper[d] < lower[d] ? 1 : std::floor((upper[d] - lower[d]) / cutoff) + 1;
+    const auto bin_of = [&](const Point<dim> &x) {
+      std::array<std::int64_t, dim> bin;
+      for (unsigned int d = 0; d < dim; ++d)
+        bin[d] = std::min<std::int64_t>(std::floor((x[d] - lower[d]) / cutoff), n_bins[d] - 1);
+      return bin;
+    };
+    const auto key_of = [&](const std::array<std::int64_t, dim> &bin) {
+      std::uint64_t key = 0;
+      for (int d = dim - 1; d >= 0; --d)
+        key = key * n_bins[d] + bin[d];
+      return key;
+    };
+    std::vector<std::pair<std::uint64_t, unsigned int>> binned;
+    for (unsigned int i = 0; i < n_total; ++i)
+      if (alpha[i] == 0)
+        binned.emplace_back(key_of(bin_of(position[i])), i);
+    std::sort(binned.begin(), binned.end());
+
+    particles_with_partners.clear();
+    partner_begin.assign(1, 0);
+    partner.clear();
+    partner_bond.clear();
+    std::vector<unsigned int> found;
+    unsigned int              n_neighbor_bins = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_neighbor_bins *= 3;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        if (alpha[i] != 0)
+          continue;
+        found.clear();
+        const auto bin = bin_of(position[i]);
+        for (unsigned int o = 0; o < n_neighbor_bins; ++o)
+          {
+            std::array<std::int64_t, dim> neighbor_bin;
+            bool                          inside = true;
+            for (unsigned int d = 0, rest = o; d < dim; ++d, rest /= 3)
+              {
+                neighbor_bin[d] = bin[d] + static_cast<std::int64_t>(rest % 3) - 1;
+                inside          = inside && neighbor_bin[d] >= 0 && neighbor_bin[d] < n_bins[d];
+              }
+            if (!inside)
+              continue;
+            const std::uint64_t key = key_of(neighbor_bin);
+            auto first = std::lower_bound(binned.begin(), binned.end(), std::make_pair(key, 0u));
+            for (; first != binned.end() && first->first == key; ++first)
+              if (const unsigned int j = first->second;
+                  j != i && (position[j] - position[i]).norm_square() < cutoff * cutoff)
+                found.push_back(j);
+          }
+        if (found.empty())
+          continue;
+        // Partners in the order of their ids: the same summation order on any partition.
+        std::sort(found.begin(), found.end(), [&](const unsigned int a, const unsigned int b) {
+          return ids[a] < ids[b];
+        });
+        particles_with_partners.push_back(i);
+        for (const unsigned int j : found)
+          {
+            partner.push_back(j);
+            partner_bond.push_back(stored_bond(bonds, i, j, no_bond));
+          }
+        partner_begin.push_back(partner.size());
+      }
+    displacement_at_build.assign(displacement.begin(), displacement.end());
+    list_current = true;
+  }
+
+  template <int dim>
+  void
+  ParticleContact<dim>::add_forces(const BondFamilies<dim>               &bonds,
+                                   ArrayView<const Point<dim>>            reference_position,
+                                   ArrayView<const types::particle_index> ids,
+                                   ArrayView<const double>                alpha,
+                                   ArrayView<const Tensor<1, dim>>        displacement,
+                                   const double                           particle_volume,
+                                   std::vector<Tensor<1, dim>>           &force_density,
+                                   std::vector<double>                   &energy_density)
+  {
+    if (list_outdated(displacement, bonds.n_owned))
+      build_list(bonds, reference_position, ids, alpha, displacement);
+
+    const double               d = contact_distance, k = pair_stiffness;
+    const double               per_volume = 1. / particle_volume;
+    std::vector<unsigned char> touches(particles_with_partners.size(), 0);
+    std::vector<double>        energies(particles_with_partners.size(), 0.);
+    for_each_subrange(
+      particles_with_partners.size(),
+      [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int p = first; p < end; ++p)
+          {
+            const unsigned int i = particles_with_partners[p];
+            Tensor<1, dim>     force;
+            double             pair_energy = 0;
+            for (unsigned int q = partner_begin[p]; q < partner_begin[p + 1]; ++q)
+              {
+                const std::size_t n = partner_bond[q];
+                if (n != no_bond && bonds.state[n] != BondFamilies<dim>::broken)
+                  continue;
+                const unsigned int j = partner[q];
+                // Formed from (x_j - x_i) and (u_j - u_i): exactly the negative seen from j.
+                const Tensor<1, dim> eta = (reference_position[j] - reference_position[i]) +
+                                           (displacement[j] - displacement[i]);
+                const double r2 = eta.norm_square();
+                if (!(r2 < d * d))
+                  continue;
+                const double r       = std::sqrt(r2);
+                const double overlap = d - r;
+                if (r > 0)
+                  force -= (k * overlap / r) * eta;
+                pair_energy += 0.25 * k * overlap * overlap;
+                touches[p] = 1;
+              }
+            energies[p] = pair_energy;
+            force_density[i] += per_volume * force;
+            energy_density[i] += per_volume * pair_energy;
+          }
+      },
+      256);
+    touching = std::count(touches.begin(), touches.end(), 1);
+    energy   = std::accumulate(energies.begin(), energies.end(), 0.);
+  }
+
+  template class ParticleContact<2>;
+  template class ParticleContact<3>;
+} // namespace PeriArlequin
