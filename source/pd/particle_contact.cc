@@ -17,7 +17,6 @@ namespace PeriArlequin
   template <int dim>
   ParticleContact<dim>::ParticleContact(const Parameters::ParticleContact &parameters,
                                         const double                       lattice_spacing,
-                                        const double                       horizon,
                                         const double                       youngs_modulus,
                                         const MPI_Comm                     communicator)
     : contact_distance(parameters.distance_factor * lattice_spacing)
@@ -26,15 +25,15 @@ namespace PeriArlequin
     , skin(std::min(0.5 * (lattice_spacing - contact_distance), 0.1 * lattice_spacing))
     , pair_stiffness(parameters.stiffness_factor * youngs_modulus *
                      std::pow(lattice_spacing, dim - 2))
-    , horizon(horizon)
     , communicator(communicator)
   {}
 
   template <int dim>
   void
-  ParticleContact<dim>::invalidate()
+  ParticleContact<dim>::reinit(const double held_distance)
   {
-    list_current = false;
+    this->held_distance = held_distance;
+    list_current        = false;
   }
 
   template <int dim>
@@ -46,20 +45,22 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ParticleContact<dim>::check_partners_held(const double largest_displacement) const
+  ParticleContact<dim>::check_partners_held(const double displacement_spread) const
   {
     if (Utilities::MPI::n_mpi_processes(communicator) == 1 ||
-        2. * largest_displacement + contact_distance <= horizon)
+        displacement_spread + contact_distance <= held_distance)
       return;
     std::ostringstream message;
-    message << "Particle contact on several ranks: a particle has moved " << largest_displacement
-            << " m, so two particles that started more than a horizon apart (delta = " << horizon
-            << " m) may now be closer than the contact distance " << contact_distance
-            << " m while no rank holds both (a rank holds the particles within a horizon of "
-               "its own, in the reference configuration). Contact is partition-independent "
-               "while every displacement stays below (delta - d_c)/2 = "
-            << 0.5 * (horizon - contact_distance)
-            << " m; run this case on one rank, or with a larger 'Peridynamics/Horizon factor'.";
+    message << "Particle contact on several ranks: the displacements now differ by up to "
+            << displacement_spread
+            << " m, so two particles that started farther apart than a rank sees (the "
+               "smallest background cell holding particles, "
+            << held_distance << " m) may be closer than the contact distance " << contact_distance
+            << " m while no rank holds both. Contact on several ranks holds while the "
+               "displacements differ by less than "
+            << held_distance - contact_distance
+            << " m; run this case on one rank (threads), or with coarser background cells "
+               "(Geometry/Subdivisions).";
     AssertThrow(false, ExcMessage(message.str()));
   }
 
@@ -69,17 +70,28 @@ namespace PeriArlequin
                                       const unsigned int              n_owned) const
   {
     const bool comparable = list_current && displacement_at_build.size() == displacement.size();
-    std::array<double, 2> largest = {{0., 0.}};
+    // The largest squared drift since the list was built, then the largest and the negated
+    // smallest displacement component by component: one reduction.
+    std::array<double, 1 + 2 * dim> largest;
+    largest.fill(std::numeric_limits<double>::lowest());
+    largest[0] = 0;
     if (comparable)
       for (unsigned int i = 0; i < displacement.size(); ++i)
         largest[0] =
           std::max(largest[0], (displacement[i] - displacement_at_build[i]).norm_square());
     for (unsigned int i = 0; i < n_owned; ++i)
-      largest[1] = std::max(largest[1], displacement[i].norm_square());
-    Utilities::MPI::max(ArrayView<const double>(largest.data(), 2),
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          largest[1 + d]       = std::max(largest[1 + d], displacement[i][d]);
+          largest[1 + dim + d] = std::max(largest[1 + dim + d], -displacement[i][d]);
+        }
+    Utilities::MPI::max(ArrayView<const double>(largest.data(), largest.size()),
                         communicator,
-                        ArrayView<double>(largest.data(), 2));
-    check_partners_held(std::sqrt(largest[1]));
+                        ArrayView<double>(largest.data(), largest.size()));
+    double spread = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      spread += std::pow(std::max(largest[1 + d] + largest[1 + dim + d], 0.), 2);
+    check_partners_held(std::sqrt(spread));
     return !comparable || std::sqrt(largest[0]) > 0.5 * skin;
   }
 

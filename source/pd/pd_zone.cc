@@ -69,8 +69,10 @@ namespace PeriArlequin
         }
     bonds.build_stencil(dx, parameters.horizon());
     if (parameters.contact.enabled)
-      contact = std::make_unique<ParticleContact<dim>>(
-        parameters.contact, dx, parameters.horizon(), material.youngs_modulus, communicator);
+      contact = std::make_unique<ParticleContact<dim>>(parameters.contact,
+                                                       dx,
+                                                       material.youngs_modulus,
+                                                       communicator);
   }
 
   template <int dim>
@@ -139,7 +141,7 @@ namespace PeriArlequin
                                          const HeldBefore                                   *before)
   {
     ghosts.reinit();
-    check_horizon_covered();
+    const double held_distance = check_horizon_covered();
     compute_blending_weights();
     // On a general mesh a site of the extent may lie outside the mesh (a hole, a notch): no
     // particle, no bond, and no error.
@@ -196,7 +198,7 @@ namespace PeriArlequin
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator) || !settling_force.empty();
     if (contact)
-      contact->invalidate();
+      contact->reinit(held_distance);
   }
 
   template <int dim>

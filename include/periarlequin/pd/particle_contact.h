@@ -40,18 +40,21 @@ namespace PeriArlequin
   {
   public:
     /**
-     * Contact for a lattice of spacing @p lattice_spacing and horizon @p horizon in a
-     * material of Young's modulus @p youngs_modulus [Pa], over @p communicator.
+     * Contact for a lattice of spacing @p lattice_spacing in a material of Young's modulus
+     * @p youngs_modulus [Pa], over @p communicator.
      */
     ParticleContact(const Parameters::ParticleContact &parameters,
                     const double                       lattice_spacing,
-                    const double                       horizon,
                     const double                       youngs_modulus,
                     const MPI_Comm                     communicator);
 
-    /** The particle set or its local numbering changed: build the list before the next use. */
+    /**
+     * The particle set or its local numbering changed: build the list before the next use.
+     * Every rank holds (owns or has as ghosts) all particles within @p held_distance [m] of
+     * its own in the reference configuration.
+     */
     void
-    invalidate();
+    reinit(const double held_distance);
 
     /**
      * Add the contact force densities [N/m^dim] and energy densities [J/m^dim] of the owned
@@ -128,17 +131,18 @@ namespace PeriArlequin
 
     /**
      * Refuse a partition that may hide a contact partner: a rank holds every particle within
-     * the horizon of its own in the reference configuration, so a pair it cannot see is
-     * closer than d_c only if the two particles moved more than delta - d_c apart. Takes the
-     * largest displacement of any particle [m].
+     * the held distance of its own in the reference configuration, so a pair it cannot see is
+     * closer than d_c only if the two particles moved more than that distance minus d_c
+     * relative to each other, which @p displacement_spread bounds: the diagonal of the box
+     * of all displacements [m].
      */
     void
-    check_partners_held(const double largest_displacement) const;
+    check_partners_held(const double displacement_spread) const;
 
     double         contact_distance;
     double         skin;
     double         pair_stiffness;
-    double         horizon;
+    double         held_distance = 0;
     const MPI_Comm communicator;
 
     bool list_current = false;
