@@ -20,9 +20,9 @@ namespace PeriArlequin
                                         const double                       youngs_modulus,
                                         const MPI_Comm                     communicator)
     : contact_distance(parameters.distance_factor * lattice_spacing)
-    // The list reaches half-way to the lattice spacing (at most 0.1 dx beyond d_c): at rest
-    // it holds no pair of lattice neighbours.
-    , skin(std::min(0.5 * (lattice_spacing - contact_distance), 0.1 * lattice_spacing))
+    // A skin of 0.4 dx: at rest the list holds the nearest lattice neighbours (skipped while
+    // bonded) but not the diagonal ones at sqrt(2) dx; a rebuild every 0.2 dx of motion.
+    , skin(0.09 * lattice_spacing)
     , pair_stiffness(parameters.stiffness_factor * youngs_modulus *
                      std::pow(lattice_spacing, dim - 2))
     , communicator(communicator)
@@ -146,57 +146,63 @@ namespace PeriArlequin
       }
 
     // Bins of edge `cutoff` over the particles outside the overlap, as (key, particle) sorted
-    // by key: a pair closer than the cutoff lies in the same or in neighbouring bins.
-    std::array<std::int64_t, dim> n_bins;
+    // by key: a pair closer than the cutoff lies in the same or in neighbouring bins. A layer
+    // of empty bins around makes every neighbour of a bin a bin: its neighbours along x are
+    // the keys before and after it, and each row of three along x is the key shifted by a
+    // fixed offset.
+    std::array<std::int64_t, dim> n_bins, stride;
     for (unsigned int d = 0; d < dim; ++d)
-      n_bins[d] = upper[d] < lower[d] ? 1 : std::floor((upper[d] - lower[d]) / cutoff) + 1;
-    const auto bin_of = [&](const Point<dim> &x) {
-      std::array<std::int64_t, dim> bin;
+      n_bins[d] = (upper[d] < lower[d] ? 1 : std::floor((upper[d] - lower[d]) / cutoff) + 1) + 2;
+    stride[0] = 1;
+    for (unsigned int d = 1; d < dim; ++d)
+      stride[d] = stride[d - 1] * n_bins[d - 1];
+    const auto key_of = [&](const Point<dim> &x) {
+      std::int64_t key = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        bin[d] = std::min<std::int64_t>(std::floor((x[d] - lower[d]) / cutoff), n_bins[d] - 1);
-      return bin;
-    };
-    const auto key_of = [&](const std::array<std::int64_t, dim> &bin) {
-      std::uint64_t key = 0;
-      for (int d = dim - 1; d >= 0; --d)
-        key = key * n_bins[d] + bin[d];
+        key += stride[d] *
+               (1 + std::min<std::int64_t>(std::floor((x[d] - lower[d]) / cutoff), n_bins[d] - 3));
       return key;
     };
-    std::vector<std::pair<std::uint64_t, unsigned int>> binned;
+    std::vector<std::pair<std::int64_t, unsigned int>> binned;
     for (unsigned int i = 0; i < n_total; ++i)
       if (alpha[i] == 0)
-        binned.emplace_back(key_of(bin_of(position[i])), i);
+        binned.emplace_back(key_of(position[i]), i);
     std::sort(binned.begin(), binned.end());
+
+    // The key offsets of the rows of neighbouring bins (3^(dim-1)); visited in key order,
+    // each row's first candidate only moves forward.
+    std::vector<std::int64_t> row_offset(1, 0);
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        std::vector<std::int64_t> extended;
+        for (const std::int64_t offset : row_offset)
+          for (const int shift : {-1, 0, 1})
+            extended.push_back(offset + shift * stride[d]);
+        row_offset = extended;
+      }
+    std::vector<typename decltype(binned)::const_iterator> row_start(row_offset.size(),
+                                                                     binned.cbegin());
 
     particles_with_partners.clear();
     partner_begin.assign(1, 0);
     partner.clear();
     partner_bond.clear();
     std::vector<unsigned int> found;
-    unsigned int              n_neighbor_bins = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_neighbor_bins *= 3;
-    for (unsigned int i = 0; i < n_owned; ++i)
+    for (const auto &[key, i] : binned)
       {
-        if (alpha[i] != 0)
+        if (i >= n_owned)
           continue;
         found.clear();
-        const auto bin = bin_of(position[i]);
-        for (unsigned int o = 0; o < n_neighbor_bins; ++o)
+        for (unsigned int row = 0; row < row_offset.size(); ++row)
           {
-            std::array<std::int64_t, dim> neighbor_bin;
-            bool                          inside = true;
-            for (unsigned int d = 0, rest = o; d < dim; ++d, rest /= 3)
-              {
-                neighbor_bin[d] = bin[d] + static_cast<std::int64_t>(rest % 3) - 1;
-                inside          = inside && neighbor_bin[d] >= 0 && neighbor_bin[d] < n_bins[d];
-              }
-            if (!inside)
-              continue;
-            const std::uint64_t key = key_of(neighbor_bin);
-            auto first = std::lower_bound(binned.begin(), binned.end(), std::make_pair(key, 0u));
-            for (; first != binned.end() && first->first == key; ++first)
-              if (const unsigned int j = first->second;
+            const std::int64_t first_key = key + row_offset[row] - 1;
+            auto              &entry     = row_start[row];
+            while (entry != binned.cend() && entry->first < first_key)
+              ++entry;
+            for (auto candidate = entry;
+                 candidate != binned.cend() && candidate->first <= first_key + 2;
+                 ++candidate)
+              if (const unsigned int j = candidate->second;
                   j != i && (position[j] - position[i]).norm_square() < cutoff * cutoff)
                 found.push_back(j);
           }
