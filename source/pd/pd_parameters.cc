@@ -58,7 +58,9 @@ namespace PeriArlequin
                   "Pair stiffness k over E dx^(dim-2), > 0 [-]: the force between two particles "
                   "at distance r < d_c is k (d_c - r) [N, per unit thickness in 2D]. With 1 a "
                   "touching pair is as stiff as a column of the material dx long and dx^(dim-1) "
-                  "in section; the estimated stable step accounts for it.");
+                  "in section. The estimated stable step accounts for it: at 0.3 it is about "
+                  "0.7 of the step without contact (0.86 at 0.1, 0.48 at 1); softer contact "
+                  "lets faces overlap more, by sigma dx / k under a stress sigma.");
     }
 
     template <int dim>

@@ -47,7 +47,7 @@ namespace PeriArlequin
       /** d_c / dx [-]. */
       double distance_factor = 0.9;
       /** k / (E dx^(dim-2)) [-]. */
-      double stiffness_factor = 1.;
+      double stiffness_factor = 0.3;
 
       void
       entries(ParameterEntries &entries);
