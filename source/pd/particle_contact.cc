@@ -69,30 +69,53 @@ namespace PeriArlequin
   ParticleContact<dim>::list_outdated(ArrayView<const Tensor<1, dim>> displacement,
                                       const unsigned int              n_owned) const
   {
-    const bool comparable = list_current && displacement_at_build.size() == displacement.size();
-    // The largest squared drift since the list was built, then the largest and the negated
-    // smallest displacement component by component: one reduction.
-    std::array<double, 1 + 2 * dim> largest;
-    largest.fill(std::numeric_limits<double>::lowest());
-    largest[0] = 0;
-    if (comparable)
-      for (unsigned int i = 0; i < displacement.size(); ++i)
-        largest[0] =
-          std::max(largest[0], (displacement[i] - displacement_at_build[i]).norm_square());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          largest[1 + d]       = std::max(largest[1 + d], displacement[i][d]);
-          largest[1 + dim + d] = std::max(largest[1 + dim + d], -displacement[i][d]);
-        }
+    const bool comparable = list_current && displacement_at_build.size() == n_owned;
+    // Per component, the largest and the negated smallest drift since the list was built and
+    // of the displacement, over the owned particles of all ranks: one reduction. The diagonal
+    // of each box bounds how much any two particles moved relative to each other.
+    using Extremes      = std::array<double, 4 * dim>;
+    const auto extremes = [&](const unsigned int first, const unsigned int end) {
+      Extremes largest;
+      largest.fill(std::numeric_limits<double>::lowest());
+      for (unsigned int i = first; i < end; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (comparable)
+              {
+                const double drift = displacement[i][d] - displacement_at_build[i][d];
+                largest[d]         = std::max(largest[d], drift);
+                largest[dim + d]   = std::max(largest[dim + d], -drift);
+              }
+            largest[2 * dim + d] = std::max(largest[2 * dim + d], displacement[i][d]);
+            largest[3 * dim + d] = std::max(largest[3 * dim + d], -displacement[i][d]);
+          }
+      return largest;
+    };
+    // Fixed chunks on the threads, their extremes combined after.
+    constexpr unsigned int n_chunks = 16;
+    std::vector<Extremes>  chunk_extremes(n_chunks);
+    for_each_subrange(
+      n_chunks,
+      [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int c = first; c < end; ++c)
+          chunk_extremes[c] = extremes(n_owned * c / n_chunks, n_owned * (c + 1) / n_chunks);
+      },
+      1);
+    Extremes largest = chunk_extremes[0];
+    for (const Extremes &chunk : chunk_extremes)
+      for (unsigned int k = 0; k < largest.size(); ++k)
+        largest[k] = std::max(largest[k], chunk[k]);
     Utilities::MPI::max(ArrayView<const double>(largest.data(), largest.size()),
                         communicator,
                         ArrayView<double>(largest.data(), largest.size()));
-    double spread = 0;
-    for (unsigned int d = 0; d < dim; ++d)
-      spread += std::pow(std::max(largest[1 + d] + largest[1 + dim + d], 0.), 2);
-    check_partners_held(std::sqrt(spread));
-    return !comparable || std::sqrt(largest[0]) > 0.5 * skin;
+    const auto diagonal = [&](const unsigned int first) {
+      double square = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        square += std::pow(std::max(largest[first + d] + largest[first + dim + d], 0.), 2);
+      return std::sqrt(square);
+    };
+    check_partners_held(diagonal(2 * dim));
+    return !comparable || diagonal(0) > skin;
   }
 
   namespace
@@ -114,6 +137,33 @@ namespace PeriArlequin
         if (bonds.neighbor(owner, n) == other)
           return n;
       return none;
+    }
+  } // namespace
+
+  namespace
+  {
+    /**
+     * Sort (key, particle) pairs by key, then particle: by counting when the keys, in
+     * [0, @p n_keys), are not many more than the pairs (a compact body), else by comparison.
+     */
+    void
+    sort_by_key(std::vector<std::pair<std::int64_t, unsigned int>> &entries,
+                const std::int64_t                                  n_keys)
+    {
+      if (n_keys > 4 * static_cast<std::int64_t>(entries.size()) + 1024)
+        {
+          std::sort(entries.begin(), entries.end());
+          return;
+        }
+      std::vector<unsigned int> start(n_keys + 1, 0);
+      for (const auto &entry : entries)
+        ++start[entry.first + 1];
+      std::partial_sum(start.begin(), start.end(), start.begin());
+      // Entries arrive in particle order, so each key's run keeps it.
+      std::vector<std::pair<std::int64_t, unsigned int>> sorted(entries.size());
+      for (const auto &entry : entries)
+        sorted[start[entry.first]++] = entry;
+      entries.swap(sorted);
     }
   } // namespace
 
@@ -167,7 +217,7 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < n_total; ++i)
       if (alpha[i] == 0)
         binned.emplace_back(key_of(position[i]), i);
-    std::sort(binned.begin(), binned.end());
+    sort_by_key(binned, stride[dim - 1] * n_bins[dim - 1]);
 
     // The key offsets of the rows of neighbouring bins (3^(dim-1)); visited in key order,
     // each row's first candidate only moves forward.
@@ -180,47 +230,85 @@ namespace PeriArlequin
             extended.push_back(offset + shift * stride[d]);
         row_offset = extended;
       }
-    std::vector<typename decltype(binned)::const_iterator> row_start(row_offset.size(),
-                                                                     binned.cbegin());
+
+    // The sorted entries in chunks searched on the threads, each chunk's pairs kept apart and
+    // joined in chunk order: the list does not depend on the number of threads.
+    struct Chunk
+    {
+      std::vector<unsigned int> particles, n_partners, partners;
+      std::vector<std::size_t>  partner_bonds;
+    };
+    constexpr unsigned int n_chunks = 16;
+    std::vector<Chunk>     chunks(n_chunks);
+    const auto             search = [&](const unsigned int c) {
+      Chunk     &chunk = chunks[c];
+      const auto begin = binned.cbegin() + binned.size() * c / n_chunks;
+      const auto end   = binned.cbegin() + binned.size() * (c + 1) / n_chunks;
+      if (begin == end)
+        return;
+      std::vector<typename decltype(binned)::const_iterator> row_start(row_offset.size());
+      for (unsigned int row = 0; row < row_offset.size(); ++row)
+        row_start[row] = std::lower_bound(binned.cbegin(),
+                                          binned.cend(),
+                                          std::make_pair(begin->first + row_offset[row] - 1, 0u));
+      std::vector<unsigned int> found;
+      for (auto entry = begin; entry != end; ++entry)
+        {
+          const auto [key, i] = *entry;
+          if (i >= n_owned)
+            continue;
+          found.clear();
+          for (unsigned int row = 0; row < row_offset.size(); ++row)
+            {
+              const std::int64_t first_key = key + row_offset[row] - 1;
+              auto              &candidate = row_start[row];
+              while (candidate != binned.cend() && candidate->first < first_key)
+                ++candidate;
+              for (auto c = candidate; c != binned.cend() && c->first <= first_key + 2; ++c)
+                if (const unsigned int j = c->second;
+                    j != i && (position[j] - position[i]).norm_square() < cutoff * cutoff)
+                  found.push_back(j);
+            }
+          if (found.empty())
+            continue;
+          // Partners in the order of their ids: the same summation order on any partition.
+          std::sort(found.begin(), found.end(), [&](const unsigned int a, const unsigned int b) {
+            return ids[a] < ids[b];
+          });
+          chunk.particles.push_back(i);
+          chunk.n_partners.push_back(found.size());
+          for (const unsigned int j : found)
+            {
+              chunk.partners.push_back(j);
+              chunk.partner_bonds.push_back(stored_bond(bonds, i, j, no_bond));
+            }
+        }
+    };
+    for_each_subrange(
+      n_chunks,
+      [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int c = first; c < end; ++c)
+          search(c);
+      },
+      1);
 
     particles_with_partners.clear();
     partner_begin.assign(1, 0);
     partner.clear();
     partner_bond.clear();
-    std::vector<unsigned int> found;
-    for (const auto &[key, i] : binned)
+    for (const Chunk &chunk : chunks)
       {
-        if (i >= n_owned)
-          continue;
-        found.clear();
-        for (unsigned int row = 0; row < row_offset.size(); ++row)
-          {
-            const std::int64_t first_key = key + row_offset[row] - 1;
-            auto              &entry     = row_start[row];
-            while (entry != binned.cend() && entry->first < first_key)
-              ++entry;
-            for (auto candidate = entry;
-                 candidate != binned.cend() && candidate->first <= first_key + 2;
-                 ++candidate)
-              if (const unsigned int j = candidate->second;
-                  j != i && (position[j] - position[i]).norm_square() < cutoff * cutoff)
-                found.push_back(j);
-          }
-        if (found.empty())
-          continue;
-        // Partners in the order of their ids: the same summation order on any partition.
-        std::sort(found.begin(), found.end(), [&](const unsigned int a, const unsigned int b) {
-          return ids[a] < ids[b];
-        });
-        particles_with_partners.push_back(i);
-        for (const unsigned int j : found)
-          {
-            partner.push_back(j);
-            partner_bond.push_back(stored_bond(bonds, i, j, no_bond));
-          }
-        partner_begin.push_back(partner.size());
+        particles_with_partners.insert(particles_with_partners.end(),
+                                       chunk.particles.begin(),
+                                       chunk.particles.end());
+        for (const unsigned int n : chunk.n_partners)
+          partner_begin.push_back(partner_begin.back() + n);
+        partner.insert(partner.end(), chunk.partners.begin(), chunk.partners.end());
+        partner_bond.insert(partner_bond.end(),
+                            chunk.partner_bonds.begin(),
+                            chunk.partner_bonds.end());
       }
-    displacement_at_build.assign(displacement.begin(), displacement.end());
+    displacement_at_build.assign(displacement.begin(), displacement.begin() + n_owned);
     list_current = true;
   }
 

@@ -25,8 +25,9 @@ namespace PeriArlequin
    *
    * The candidate pairs are kept in a Verlet list: every pair of held particles (owned and
    * ghost) closer than d_c plus a skin when the list was built, found by binning the current
-   * positions in cells of that size. The list holds until some particle has moved half the
-   * skin since; then it is built again, on all ranks together. A pair closer than d_c is in
+   * positions in cells of that size. The list holds until two particles may have moved by
+   * the skin relative to each other (the box of all drifts since has a diagonal of a skin);
+   * then it is built again, on all ranks together. A pair closer than d_c is in
    * the list whenever the list is current, so the forces do not depend on when lists were
    * built, nor on the partition: each owned particle sums the forces of its pairs in the
    * order of its partners' ids, and a pair's force is formed identically (to the sign) from
@@ -115,8 +116,8 @@ namespace PeriArlequin
     static constexpr std::size_t no_bond = std::numeric_limits<std::size_t>::max();
 
     /**
-     * Whether some held particle moved half the skin since the list was built; checks that
-     * every partner is held on the way (collective).
+     * Whether two particles may have moved by the skin relative to each other since the list
+     * was built; checks that every partner is held on the way (collective).
      */
     bool
     list_outdated(ArrayView<const Tensor<1, dim>> displacement, const unsigned int n_owned) const;
@@ -146,7 +147,7 @@ namespace PeriArlequin
     const MPI_Comm communicator;
 
     bool list_current = false;
-    /** Displacements of the held particles when the list was built. */
+    /** Displacements of the owned particles when the list was built. */
     std::vector<Tensor<1, dim>> displacement_at_build;
     /** Owned particles with partners, and their partners in [partner_begin[p], ...[p + 1]). */
     std::vector<unsigned int> particles_with_partners;
