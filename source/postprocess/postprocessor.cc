@@ -113,9 +113,9 @@ namespace PeriArlequin
     const ParticleContact<dim> *contact = pd ? pd->get_particle_contact() : nullptr;
     history.add_value("touching_particles", pd ? pd->n_touching_particles() : 0);
     history.add_value("contact_energy",
-                      contact ? Utilities::MPI::sum(contact->local_energy(),
-                                                    pd->get_communicator()) :
-                                0.);
+                      contact ?
+                        Utilities::MPI::sum(contact->local_energy(), pd->get_communicator()) :
+                        0.);
   }
 
   template <int dim>
