@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -30,10 +31,12 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ParticleContact<dim>::reinit(const double held_distance)
+  ParticleContact<dim>::reinit(std::vector<types::global_cell_index>        particle_cells,
+                               std::unordered_set<types::global_cell_index> held_cells)
   {
-    this->held_distance = held_distance;
-    list_current        = false;
+    this->particle_cells = std::move(particle_cells);
+    this->held_cells     = std::move(held_cells);
+    list_current         = false;
   }
 
   template <int dim>
@@ -45,22 +48,112 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ParticleContact<dim>::check_partners_held(const double displacement_spread) const
+  ParticleContact<dim>::check_partners_held(const std::vector<Point<dim>> &position,
+                                            ArrayView<const double>        alpha) const
   {
-    if (Utilities::MPI::n_mpi_processes(communicator) == 1 ||
-        displacement_spread + contact_distance <= held_distance)
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
+      return;
+    // Per owned cell, the box of its particles' current positions: (cell, lower, upper).
+    std::map<types::global_cell_index, std::pair<Point<dim>, Point<dim>>> own_boxes;
+    for (unsigned int i = 0; i < particle_cells.size(); ++i)
+      if (alpha[i] == 0)
+        {
+          const auto [box, inserted] =
+            own_boxes.try_emplace(particle_cells[i], position[i], position[i]);
+          if (!inserted)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                box->second.first[d]  = std::min(box->second.first[d], position[i][d]);
+                box->second.second[d] = std::max(box->second.second[d], position[i][d]);
+              }
+        }
+    std::vector<double> flat;
+    for (const auto &[cell, box] : own_boxes)
+      {
+        flat.push_back(cell);
+        for (unsigned int d = 0; d < dim; ++d)
+          flat.push_back(box.first[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          flat.push_back(box.second[d]);
+      }
+    const std::vector<std::vector<double>> all = Utilities::MPI::all_gather(communicator, flat);
+
+    // The cells this rank does not hold, against its own boxes grown by the cutoff, by a
+    // sweep along x over both lists sorted by their lower x.
+    const double cutoff = contact_distance + skin;
+    using Box           = std::pair<Point<dim>, Point<dim>>;
+    std::vector<Box> own, foreign;
+    for (const auto &[cell, box] : own_boxes)
+      {
+        Box grown = box;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            grown.first[d] -= cutoff;
+            grown.second[d] += cutoff;
+          }
+        own.push_back(grown);
+      }
+    for (const std::vector<double> &boxes : all)
+      for (std::size_t k = 0; k < boxes.size(); k += 1 + 2 * dim)
+        if (held_cells.count(static_cast<types::global_cell_index>(boxes[k])) == 0)
+          {
+            Box box;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                box.first[d]  = boxes[k + 1 + d];
+                box.second[d] = boxes[k + 1 + dim + d];
+              }
+            foreign.push_back(box);
+          }
+    const auto by_lower_x = [](const Box &a, const Box &b) { return a.first[0] < b.first[0]; };
+    std::sort(own.begin(), own.end(), by_lower_x);
+    std::sort(foreign.begin(), foreign.end(), by_lower_x);
+    const auto overlap = [](const Box &a, const Box &b) {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (a.second[d] < b.first[d] || b.second[d] < a.first[d])
+          return false;
+      return true;
+    };
+    double largest_own_width = 0;
+    for (const Box &box : own)
+      largest_own_width = std::max(largest_own_width, box.second[0] - box.first[0]);
+    const Box *met = nullptr;
+    for (const Box &box : foreign)
+      {
+        // Own boxes that can reach box start at most their largest width before it.
+        auto first =
+          std::lower_bound(own.begin(),
+                           own.end(),
+                           Box(box.first - largest_own_width * Point<dim>::unit_vector(0),
+                               Point<dim>()),
+                           by_lower_x);
+        for (; first != own.end() && !(first->first[0] > box.second[0]); ++first)
+          if (overlap(*first, box))
+            {
+              met = &box;
+              break;
+            }
+        if (met)
+          break;
+      }
+    // One message, naming the lowest rank that met such a cell; all ranks stop.
+    const unsigned int rank =
+      Utilities::MPI::min(met ? Utilities::MPI::this_mpi_process(communicator) :
+                                numbers::invalid_unsigned_int,
+                          communicator);
+    if (rank == numbers::invalid_unsigned_int)
       return;
     std::ostringstream message;
-    message << "Particle contact on several ranks: the displacements now differ by up to "
-            << displacement_spread
-            << " m, so two particles that started farther apart than a rank sees (the "
-               "smallest background cell holding particles, "
-            << held_distance << " m) may be closer than the contact distance " << contact_distance
-            << " m while no rank holds both. Contact on several ranks holds while the "
-               "displacements differ by less than "
-            << held_distance - contact_distance
-            << " m; run this case on one rank (threads), or with coarser background cells "
-               "(Geometry/Subdivisions).";
+    message << "Particle contact on several ranks: particles of background cells that are not "
+               "neighbours have come within the contact search distance of each other, and no "
+               "rank holds both (a fragment, or faces sliding past each other across a rank "
+               "boundary; first seen on rank "
+            << rank;
+    if (met && Utilities::MPI::this_mpi_process(communicator) == rank)
+      message << ", by the particles of a cell in " << met->first << " : " << met->second << " m";
+    message << "). Contact across ranks is computed between the particles of neighbouring "
+               "cells only: run this case on one rank (threads), or with coarser background "
+               "cells (Geometry/Subdivisions).";
     AssertThrow(false, ExcMessage(message.str()));
   }
 
@@ -69,25 +162,21 @@ namespace PeriArlequin
   ParticleContact<dim>::list_outdated(ArrayView<const Tensor<1, dim>> displacement,
                                       const unsigned int              n_owned) const
   {
-    const bool comparable = list_current && displacement_at_build.size() == n_owned;
-    // Per component, the largest and the negated smallest drift since the list was built and
-    // of the displacement, over the owned particles of all ranks: one reduction. The diagonal
-    // of each box bounds how much any two particles moved relative to each other.
-    using Extremes      = std::array<double, 4 * dim>;
+    if (!(list_current && displacement_at_build.size() == n_owned))
+      return true;
+    // Per component, the largest and the negated smallest drift since the list was built,
+    // over the owned particles of all ranks: the diagonal of that box bounds how much any
+    // two particles moved relative to each other.
+    using Extremes      = std::array<double, 2 * dim>;
     const auto extremes = [&](const unsigned int first, const unsigned int end) {
       Extremes largest;
       largest.fill(std::numeric_limits<double>::lowest());
       for (unsigned int i = first; i < end; ++i)
         for (unsigned int d = 0; d < dim; ++d)
           {
-            if (comparable)
-              {
-                const double drift = displacement[i][d] - displacement_at_build[i][d];
-                largest[d]         = std::max(largest[d], drift);
-                largest[dim + d]   = std::max(largest[dim + d], -drift);
-              }
-            largest[2 * dim + d] = std::max(largest[2 * dim + d], displacement[i][d]);
-            largest[3 * dim + d] = std::max(largest[3 * dim + d], -displacement[i][d]);
+            const double drift = displacement[i][d] - displacement_at_build[i][d];
+            largest[d]         = std::max(largest[d], drift);
+            largest[dim + d]   = std::max(largest[dim + d], -drift);
           }
       return largest;
     };
@@ -108,14 +197,10 @@ namespace PeriArlequin
     Utilities::MPI::max(ArrayView<const double>(largest.data(), largest.size()),
                         communicator,
                         ArrayView<double>(largest.data(), largest.size()));
-    const auto diagonal = [&](const unsigned int first) {
-      double square = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-        square += std::pow(std::max(largest[first + d] + largest[first + dim + d], 0.), 2);
-      return std::sqrt(square);
-    };
-    check_partners_held(diagonal(2 * dim));
-    return !comparable || diagonal(0) > skin;
+    double square = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      square += std::pow(std::max(largest[d] + largest[dim + d], 0.), 2);
+    return std::sqrt(square) > skin;
   }
 
   namespace
@@ -194,6 +279,8 @@ namespace PeriArlequin
               upper[d] = std::max(upper[d], position[i][d]);
             }
       }
+
+    check_partners_held(position, alpha);
 
     // Bins of edge `cutoff` over the particles outside the overlap, as (key, particle) sorted
     // by key: a pair closer than the cutoff lies in the same or in neighbouring bins. A layer

@@ -141,7 +141,7 @@ namespace PeriArlequin
                                          const HeldBefore                                   *before)
   {
     ghosts.reinit();
-    const double held_distance = check_horizon_covered();
+    check_horizon_covered();
     compute_blending_weights();
     // On a general mesh a site of the extent may lie outside the mesh (a hole, a notch): no
     // particle, no bond, and no error.
@@ -198,7 +198,17 @@ namespace PeriArlequin
     tracks_work = problem_data->has_body_force || problem_data->has_tractions() ||
                   !prescribed.empty(communicator) || !settling_force.empty();
     if (contact)
-      contact->reinit(held_distance);
+      {
+        std::vector<types::global_cell_index> particle_cells;
+        particle_cells.reserve(n_owned);
+        for (const auto &particle : particle_handler)
+          particle_cells.push_back(particle.get_surrounding_cell()->global_active_cell_index());
+        std::unordered_set<types::global_cell_index> held_cells;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() || cell->is_ghost())
+            held_cells.insert(cell->global_active_cell_index());
+        contact->reinit(std::move(particle_cells), std::move(held_cells));
+      }
   }
 
   template <int dim>

@@ -157,7 +157,7 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  double
+  void
   PDZone<dim>::check_horizon_covered() const
   {
     // Ghost particles come from one layer of ghost cells: every cell holding particles must
@@ -179,7 +179,6 @@ namespace PeriArlequin
                                 parameters.horizon_factor,
                                 allowed.str());
       }
-    return smallest;
   }
 
   template <int dim>

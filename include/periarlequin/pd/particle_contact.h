@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <unordered_set>
 #include <vector>
 
 namespace PeriArlequin
@@ -31,7 +32,10 @@ namespace PeriArlequin
    * the list whenever the list is current, so the forces do not depend on when lists were
    * built, nor on the partition: each owned particle sums the forces of its pairs in the
    * order of its partners' ids, and a pair's force is formed identically (to the sign) from
-   * both of its particles, whichever ranks hold them.
+   * both of its particles, whichever ranks hold them. A rank holds the particles of its own
+   * and the neighbouring background cells; where particles of cells farther apart come
+   * together on several ranks (fragments, faces sliding past each other across a rank
+   * boundary), the run stops with a message rather than miss a pair.
    *
    * Contact acts between particles outside the Arlequin overlap (alpha = 0), whose PD model
    * carries the full mass and stiffness.
@@ -51,11 +55,13 @@ namespace PeriArlequin
 
     /**
      * The particle set or its local numbering changed: build the list before the next use.
-     * Every rank holds (owns or has as ghosts) all particles within @p held_distance [m] of
-     * its own in the reference configuration.
+     * @p particle_cells: the global active index of the background cell of every owned
+     * particle; @p held_cells: the cells whose particles this rank holds (owned and ghost
+     * cells).
      */
     void
-    reinit(const double held_distance);
+    reinit(std::vector<types::global_cell_index>        particle_cells,
+           std::unordered_set<types::global_cell_index> held_cells);
 
     /**
      * Add the contact force densities [N/m^dim] and energy densities [J/m^dim] of the owned
@@ -117,7 +123,7 @@ namespace PeriArlequin
 
     /**
      * Whether two particles may have moved by the skin relative to each other since the list
-     * was built; checks that every partner is held on the way (collective).
+     * was built (collective).
      */
     bool
     list_outdated(ArrayView<const Tensor<1, dim>> displacement, const unsigned int n_owned) const;
@@ -131,20 +137,21 @@ namespace PeriArlequin
                ArrayView<const Tensor<1, dim>>        displacement);
 
     /**
-     * Refuse a partition that may hide a contact partner: a rank holds every particle within
-     * the held distance of its own in the reference configuration, so a pair it cannot see is
-     * closer than d_c only if the two particles moved more than that distance minus d_c
-     * relative to each other, which @p displacement_spread bounds: the diagonal of the box
-     * of all displacements [m].
+     * Refuse a partition that may hide a contact partner: a rank holds the particles of its
+     * own and the neighbouring background cells. Every rank's cells' boxes of current particle
+     * positions are gathered; a box within the list's cutoff of one of this rank's boxes whose
+     * cell this rank does not hold stops the run (collective; nothing on one rank).
      */
     void
-    check_partners_held(const double displacement_spread) const;
+    check_partners_held(const std::vector<Point<dim>> &position,
+                        ArrayView<const double>        alpha) const;
 
-    double         contact_distance;
-    double         skin;
-    double         pair_stiffness;
-    double         held_distance = 0;
-    const MPI_Comm communicator;
+    double                                       contact_distance;
+    double                                       skin;
+    double                                       pair_stiffness;
+    const MPI_Comm                               communicator;
+    std::vector<types::global_cell_index>        particle_cells;
+    std::unordered_set<types::global_cell_index> held_cells;
 
     bool list_current = false;
     /** Displacements of the owned particles when the list was built. */

@@ -541,11 +541,7 @@ namespace PeriArlequin
      */
     std::vector<bool>
     unbreakable_particles() const;
-    /**
-     * That the ghost layer covers the bonds' reach; returns how far from its own particles a
-     * rank holds every particle (the smallest width of a cell holding particles) [m].
-     */
-    double
+    void
     check_horizon_covered() const;
     /**
      * Before anything is filled: refuse a lattice whose ids do not fit the particle index
