@@ -7,7 +7,9 @@
 #  - colliding: two 3D bars 40 x 4 x 4 mm, dx = 0.2 mm (80,000 particles), cut apart by a
 #    pre-crack, the left one at 50 m/s (in contact after 0.4 us, for the rest of the 6 us; the
 #    400 particles of each face touch). With contact off the bars pass through each other:
-#    the same bond work.
+#    the same bond work;
+#  - impact: the impact-driven mode II plate of studies/adaptive_zone/impact_mode_ii.prm
+#    (80,000 particles in 2D, pure PD with fracture, struck at 32 m/s; crack faces touch).
 #
 #   benchmarks/particle_contact.sh [build-dir]
 #
@@ -99,12 +101,20 @@ PRM
   silent_output
 }
 
+impact_prm() { # contact on|off
+  sed -e '/^subsection Output/,/^end/d' -e 's/energies, cracks, zone sizes/energies/' \
+    "$top/studies/adaptive_zone/impact_mode_ii.prm"
+  printf 'subsection Peridynamics\n  subsection Particle contact\n    set Enable = %s\n  end\nend\n' \
+    "$([ "$1" = on ] && echo true || echo false)"
+  silent_output
+}
+
 # Wall time per step of the time loop (its summary line "Time loop: N steps in T s").
 time_per_step() {
   "$build/periarlequin" "$1" | awk '/^Time loop:/{print $6 / $3}'
 }
 
-for case in block bars; do
+for case in block bars impact; do
   "${case}_prm" off > "$work/$case.off.prm"
   "${case}_prm" on > "$work/$case.on.prm"
   : > "$work/$case.times"
