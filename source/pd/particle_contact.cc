@@ -21,8 +21,8 @@ namespace PeriArlequin
                                         const double                       youngs_modulus,
                                         const MPI_Comm                     communicator)
     : contact_distance(parameters.distance_factor * lattice_spacing)
-    // A skin of 0.4 dx: at rest the list holds the nearest lattice neighbours (skipped while
-    // bonded) but not the diagonal ones at sqrt(2) dx; a rebuild every 0.2 dx of motion.
+    // A skin of 0.09 dx: with d_c = 0.9 dx the list reaches 0.99 dx, so at rest it holds no
+    // pair of lattice neighbours; rebuilt once particles moved 0.09 dx relative to each other.
     , skin(0.09 * lattice_spacing)
     , pair_stiffness(parameters.stiffness_factor * youngs_modulus *
                      std::pow(lattice_spacing, dim - 2))
