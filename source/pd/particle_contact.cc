@@ -223,10 +223,7 @@ namespace PeriArlequin
           return n;
       return none;
     }
-  } // namespace
 
-  namespace
-  {
     /**
      * Sort (key, particle) pairs by key, then particle: by counting when the keys, in
      * [0, @p n_keys), are not many more than the pairs (a compact body), else by comparison.
@@ -413,10 +410,10 @@ namespace PeriArlequin
     if (list_outdated(displacement, bonds.n_owned))
       build_list(bonds, reference_position, ids, alpha, displacement);
 
-    const double               d = contact_distance, k = pair_stiffness;
-    const double               per_volume = 1. / particle_volume;
-    std::vector<unsigned char> touches(particles_with_partners.size(), 0);
-    std::vector<double>        energies(particles_with_partners.size(), 0.);
+    const double d = contact_distance, k = pair_stiffness;
+    const double per_volume = 1. / particle_volume;
+    // Each particle's contact energy: positive exactly where it touches another.
+    std::vector<double> energies(particles_with_partners.size(), 0.);
     for_each_subrange(
       particles_with_partners.size(),
       [&](const unsigned int first, const unsigned int end) {
@@ -442,7 +439,6 @@ namespace PeriArlequin
                 if (r > 0)
                   force -= (k * overlap / r) * eta;
                 pair_energy += 0.25 * k * overlap * overlap;
-                touches[p] = 1;
               }
             energies[p] = pair_energy;
             force_density[i] += per_volume * force;
@@ -450,8 +446,9 @@ namespace PeriArlequin
           }
       },
       256);
-    touching = std::count(touches.begin(), touches.end(), 1);
-    energy   = std::accumulate(energies.begin(), energies.end(), 0.);
+    touching =
+      std::count_if(energies.begin(), energies.end(), [](const double e) { return e > 0; });
+    energy = std::accumulate(energies.begin(), energies.end(), 0.);
   }
 
   template class ParticleContact<2>;
