@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -15,6 +16,68 @@ namespace PeriArlequin
   template <int dim>
   void
   Contact<dim>::parse_parameters(ParameterHandler &)
+  {}
+
+  template <int dim>
+  bool
+  Contact<dim>::acts_on_particles() const
+  {
+    return false;
+  }
+
+  template <int dim>
+  void
+  Contact<dim>::check_particles(const MPI_Comm, const double, const std::vector<Point<dim>> &)
+  {}
+
+  template <int dim>
+  void
+  Contact<dim>::push_particles(const double,
+                               const double,
+                               const std::vector<Point<dim>> &next_position,
+                               const std::vector<double> &,
+                               std::vector<Tensor<1, dim>> &push)
+  {
+    push.assign(next_position.size(), Tensor<1, dim>());
+  }
+
+  template <int dim>
+  BoundingBox<dim>
+  Contact<dim>::reach(const double, const double) const
+  {
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = -std::numeric_limits<double>::max();
+        upper[d] = std::numeric_limits<double>::max();
+      }
+    return BoundingBox<dim>({lower, upper});
+  }
+
+  template <int dim>
+  double
+  Contact<dim>::obstacle_kinetic_energy() const
+  {
+    return 0.;
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  Contact<dim>::history_columns() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  std::string
+  Contact<dim>::save_state() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  void
+  Contact<dim>::load_state(const std::string &)
   {}
 
   template <int dim>

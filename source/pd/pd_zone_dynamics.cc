@@ -1,4 +1,5 @@
 #include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/fe/contact.h>
 #include <periarlequin/pd/pd_zone.h>
 
 #include <deal.II/base/mpi.h>
@@ -197,11 +198,67 @@ namespace PeriArlequin
       accelerate(0, ghosts.n_owned());
     else
       for_each_subrange(ghosts.n_owned(), accelerate);
+    if (obstacle)
+      push_off_obstacle();
     prescribed.restore_accelerations(state);
     // Load plus support reaction of a prescribed component: m a - f V.
     prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
       applied_force[i][d] = particle_mass(i) * a[i][d] - blended_force(i)[d];
     });
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::set_obstacle(Contact<dim> *model)
+  {
+    Assert(model == nullptr || model->acts_on_particles(),
+           ExcMessage("The contact model does not act on particles."));
+    obstacle = model;
+    if (!obstacle)
+      return;
+    find_obstacle_candidates(false);
+    obstacle->check_particles(communicator, 0.5 * parameters.lattice_spacing, obstacle_positions);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::find_obstacle_candidates(const bool next)
+  {
+    const double dt = next ? time_step : 0.;
+    // A particle stands for its lattice cell: its centre keeps half a spacing off the surface.
+    const double           radius = 0.5 * parameters.lattice_spacing;
+    const BoundingBox<dim> reach  = obstacle->reach(dt, radius);
+    const auto             x      = ghosts.reference_positions();
+    const auto u = state.displacements(), v = state.velocities(), a = state.accelerations();
+    obstacle_candidates.clear();
+    obstacle_positions.clear();
+    obstacle_masses.clear();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        if (alpha[i] > 0 || slave[i] || prescribed.contains(i))
+          continue;
+        const Point<dim> y = x[i] + u[i] + dt * v[i] + (dt * dt) * a[i];
+        if (!reach.point_inside(y))
+          continue;
+        obstacle_candidates.push_back(i);
+        obstacle_positions.push_back(y);
+        obstacle_masses.push_back(particle_mass(i));
+      }
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::push_off_obstacle()
+  {
+    find_obstacle_candidates(true);
+    obstacle->push_particles(time_step,
+                             0.5 * parameters.lattice_spacing,
+                             obstacle_positions,
+                             obstacle_masses,
+                             obstacle_pushes);
+    const auto a = state.accelerations();
+    for (unsigned int k = 0; k < obstacle_candidates.size(); ++k)
+      a[obstacle_candidates[k]] += obstacle_pushes[k];
   }
 
   template <int dim>

@@ -35,8 +35,12 @@ namespace PeriArlequin
                  fe_strain        = fe ? fe->strain_energy() : 0.;
     const double pd_kinetic       = pd ? pd->kinetic_energy() : 0.,
                  pd_strain        = pd ? pd->strain_energy() : 0.;
-    const double work    = (fe ? fe->external_work() : 0.) + (pd ? pd->external_work() : 0.);
-    const double kinetic = fe_kinetic + pd_kinetic, strain = fe_strain + pd_strain;
+    const double work = (fe ? fe->external_work() : 0.) + (pd ? pd->external_work() : 0.);
+    // A moving obstacle (a projectile) is part of the system.
+    const Contact<dim> *contact = simulator.get_contact();
+    const double        kinetic =
+      fe_kinetic + pd_kinetic + (contact ? contact->obstacle_kinetic_energy() : 0.);
+    const double strain = fe_strain + pd_strain;
     history.add_value("kinetic_energy", kinetic);
     history.add_value("strain_energy", strain);
     history.add_value("external_work", work);
@@ -128,6 +132,9 @@ namespace PeriArlequin
     for (unsigned int d = 0; d < dim; ++d)
       history.add_value(std::string("contact_force_") + axes[d], force[d]);
     history.add_value("contact_nodes", contact ? contact->n_touching_nodes() : 0);
+    if (contact)
+      for (const auto &[column, value] : contact->history_columns())
+        history.add_value(column, value);
   }
 
   template <int dim>

@@ -19,6 +19,8 @@ namespace PeriArlequin
   Simulator<dim>::load_checkpointed_mesh()
   {
     read_checkpoint();
+    if (contact)
+      contact->load_state(resumed->contact_state);
     triangulation.load(resume_directory + "mesh");
     // The owner of each cell in the checkpointed run (the first data attached).
     const unsigned int handle = triangulation.register_data_attach(
@@ -215,6 +217,8 @@ namespace PeriArlequin
           record.pd_records = pd_output->get_series().get_records();
         for (const auto &postprocessor : postprocessors)
           record.postprocessor_states.push_back(postprocessor->save_state());
+        if (contact)
+          record.contact_state = contact->save_state();
         record.files = file_checksums(slot, "state");
 
         std::ostringstream bytes;

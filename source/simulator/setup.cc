@@ -36,11 +36,11 @@ namespace PeriArlequin
     stable_time_step = std::numeric_limits<double>::max();
     if (fe_zone)
       initialize_fe_zone(dt);
-    else if (contact)
+    else if (contact && !contact->acts_on_particles())
       throw_invalid_parameter("Contact/Model",
                               contact_model,
-                              "none: contact acts on FE boundary nodes and this case has no "
-                              "FE cells");
+                              "none, or a model that acts on PD particles (rigid projectile): "
+                              "this one acts on FE boundary nodes and the case has no FE cells");
     if (pd_zone)
       initialize_pd_zone(dt);
     check_time_step();
@@ -138,6 +138,8 @@ namespace PeriArlequin
     stable_time_step =
       std::min(stable_time_step,
                pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
+    if (contact && contact->acts_on_particles())
+      pd_zone->set_obstacle(contact.get());
   }
 
   template <int dim>
@@ -162,6 +164,9 @@ namespace PeriArlequin
       zones.push_back(pd_zone.get());
     if (fe_zone)
       zones.push_back(fe_zone.get());
+    // A moving obstacle (a projectile) steps with the zones, after those it touches.
+    if (auto *moving_obstacle = dynamic_cast<IntegratedZone *>(contact.get()))
+      zones.push_back(moving_obstacle);
     n_steps = static_cast<unsigned int>(std::ceil(time_parameters.end_time / clock_step() - 1e-9));
     integrator = std::make_unique<PredictorCorrector<dim>>(zones,
                                                            coupling.get(),

@@ -315,7 +315,7 @@ namespace PeriArlequin
   void
   Simulator<dim>::rebuild_coupling()
   {
-    if (contact)
+    if (contact && fe_zone)
       contact->initialize(*fe_zone);
     if (coupling)
       coupling->initialize(*blending, *fe_zone, *pd_zone, time_parameters.time_step);

@@ -4,6 +4,7 @@
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/plugin_registry.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -13,6 +14,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PeriArlequin
@@ -23,12 +25,14 @@ namespace PeriArlequin
   class FEZone;
 
   /**
-   * Contact of the FE zone's boundary with an obstacle, inside the explicit step: selected by
-   * name in "Contact/Model" (none by default); a model's own parameters live in
-   * "Contact/<name>". The FE zone calls enforce() once its trial accelerations of a step are
-   * known; the contact force counts as an applied force, so its work enters the energy
-   * balance. The nodes that touch must not lie in an Arlequin overlap (the multiplier
-   * correction that follows would move them again).
+   * Contact of the FE zone's boundary (and, for models that say so, of PD particles) with an
+   * obstacle, inside the explicit step: selected by name in "Contact/Model" (none by
+   * default); a model's own parameters live in "Contact/<name>". The FE zone calls enforce()
+   * once its trial accelerations of a step are known, the PD zone push_particles(). A fixed
+   * obstacle's contact force counts as an applied force, so its work enters the energy
+   * balance; a moving obstacle is part of the system (its kinetic energy counts instead).
+   * The nodes that touch must not lie in an Arlequin overlap (the multiplier correction that
+   * follows would move them again); particles in an overlap are not pushed.
    *
    * Users add a model by deriving from this class and registering it with
    * PERIARLEQUIN_REGISTER_CONTACT in their own source file.
@@ -61,6 +65,63 @@ namespace PeriArlequin
             const VectorType &velocity,
             VectorType       &acceleration,
             VectorType       &applied_force) = 0;
+
+    /**
+     * Does the model act on PD particles too (push_particles())? The models of FE boundary
+     * nodes only do not, and need an FE zone.
+     */
+    virtual bool
+    acts_on_particles() const;
+
+    /**
+     * Before the first step: refuse particles that start inside the obstacle, given the
+     * current positions of the owned particles that may touch it and their contact radius
+     * @p radius [m] (collective over @p communicator; the PD zone's). Only for models that
+     * act on particles.
+     */
+    virtual void
+    check_particles(const MPI_Comm                 communicator,
+                    const double                   radius,
+                    const std::vector<Point<dim>> &positions);
+
+    /**
+     * Kinematic contact of PD particles, called by the PD zone once their trial accelerations
+     * are known: given the particles' positions @p next_position if nothing pushed them,
+     * X + u_{n+1} + dt v_{n+1/2} + dt^2 a_{n+1}, their masses and contact radius @p radius,
+     * set @p push to the acceleration each needs to end the next step outside the obstacle
+     * (zero where it does not touch). Only for models that act on particles.
+     */
+    virtual void
+    push_particles(const double                   time_step,
+                   const double                   radius,
+                   const std::vector<Point<dim>> &next_position,
+                   const std::vector<double>     &mass,
+                   std::vector<Tensor<1, dim>>   &push);
+
+    /**
+     * A box outside which no particle of contact radius @p radius can touch the obstacle at
+     * the end of the next step of @p time_step (the PD zone's broad phase); by default everything.
+     */
+    virtual BoundingBox<dim>
+    reach(const double time_step, const double radius) const;
+
+    /** The obstacle's own kinetic energy [J; J/m in 2D], the same on every rank (0: fixed). */
+    virtual double
+    obstacle_kinetic_energy() const;
+
+    /**
+     * Columns the model adds to the history besides force and touching count (a moving
+     * obstacle's position and velocity), the same on every rank; none by default.
+     */
+    virtual std::vector<std::pair<std::string, double>>
+    history_columns() const;
+
+    /** The model's own state for a checkpoint (a moving obstacle's motion); none by default. */
+    virtual std::string
+    save_state() const;
+    /** Restore what save_state() wrote. */
+    virtual void
+    load_state(const std::string &state);
 
     /**
      * The total contact force on the body at the last enforce() [N], summed over ranks

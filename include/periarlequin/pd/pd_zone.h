@@ -34,6 +34,8 @@ namespace PeriArlequin
 {
   using namespace dealii;
 
+  template <int dim>
+  class Contact;
 
   /**
    * The peridynamic particle zone: a regular lattice of spacing dx filling a union of boxes,
@@ -235,6 +237,14 @@ namespace PeriArlequin
     /** Particles of all ranks that touched another in the last force evaluation. */
     unsigned int
     n_touching_particles() const;
+    /**
+     * Kinematic contact of the particles of the pure PD part (alpha = 0, neither slaves nor
+     * prescribed) with the obstacle of @p model (one that acts on particles) after the trial
+     * accelerations of every force evaluation; the present positions are checked against it
+     * first (collective). nullptr: none. @p model must outlive its use here.
+     */
+    void
+    set_obstacle(Contact<dim> *model);
     MPI_Comm
     get_communicator() const;
     const Parameters::Peridynamics<dim> &
@@ -593,6 +603,16 @@ namespace PeriArlequin
      */
     void
     evaluate_model(const bool scalars_current = false);
+    /**
+     * The particles that may touch the obstacle: those of the pure PD part within its reach
+     * at the end of the step; with @p next, their positions then if nothing pushed them,
+     * X + u + dt v + dt^2 a, else their present positions.
+     */
+    void
+    find_obstacle_candidates(const bool next);
+    /** The obstacle's pushes added to the trial accelerations. */
+    void
+    push_off_obstacle();
 
     parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Peridynamics<dim>       &parameters;
@@ -616,8 +636,15 @@ namespace PeriArlequin
     std::unique_ptr<PDMaterialModel<dim>>   model;
     std::unique_ptr<FractureCriterion<dim>> fracture;
     std::unique_ptr<ParticleContact<dim>>   contact;
-    PrescribedParticles<dim>                prescribed;
-    SiteFilter                              extent;
+    /** The obstacle of Contact/Model, if it acts on particles (set_obstacle()). */
+    Contact<dim> *obstacle = nullptr;
+    /** Scratch of push_off_obstacle(): candidates, their positions, masses and pushes. */
+    std::vector<unsigned int>   obstacle_candidates;
+    std::vector<Point<dim>>     obstacle_positions;
+    std::vector<double>         obstacle_masses;
+    std::vector<Tensor<1, dim>> obstacle_pushes;
+    PrescribedParticles<dim>    prescribed;
+    SiteFilter                  extent;
     /** The pure PD region (Peridynamics/Region, grown by set_region()). */
     Region<dim>             region;
     Box<dim>                domain;

@@ -255,7 +255,7 @@ namespace PeriArlequin
           return;
         if (mask[runs[r].mask_begin + h * std::size_t(runs[r].length) +
                  (lower_slot - runs[r].begin)] != 0)
-          terms.push_back({run_phase[r], std::size_t(r), h, end});
+          terms.push_back({{run_phase[r], std::size_t(r), h, end}});
       };
     for (unsigned int h = 0; h < half_offsets.size(); ++h)
       {

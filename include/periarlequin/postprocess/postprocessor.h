@@ -61,7 +61,8 @@ namespace PeriArlequin
   /**
    * Energies of the whole model [J]: kinetic and strain energy, the work of loads and support
    * reactions, the total (kinetic + strain - work, conserved without dissipation), the same
-   * per zone, and the broken bonds (counted from both ends).
+   * per zone, and the broken bonds (counted from both ends). The kinetic energy includes a
+   * moving obstacle's (a rigid projectile's).
    */
   template <int dim>
   class EnergyPostprocessor : public Postprocessor<dim>
@@ -111,8 +112,9 @@ namespace PeriArlequin
   };
 
   /**
-   * Contact (Contact/Model): the total contact force on the body [N], per component, and the
-   * number of nodes in contact; zeros without contact.
+   * Contact (Contact/Model): the total contact force on the bodies [N], per component, and
+   * the number of nodes (and particles) in contact; zeros without contact. A rigid projectile
+   * adds its position [m], velocity [m/s] and kinetic energy [J].
    */
   template <int dim>
   class ContactForces : public Postprocessor<dim>

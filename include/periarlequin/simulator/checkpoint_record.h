@@ -22,7 +22,7 @@ namespace PeriArlequin
   template <int dim>
   struct Simulator<dim>::CheckpointRecord
   {
-    std::string              format    = "PeriArlequin checkpoint 4";
+    std::string              format    = "PeriArlequin checkpoint 5";
     unsigned int             dimension = dim;
     std::vector<std::string> parameters;
     unsigned int             n_ranks = 0;
@@ -39,6 +39,8 @@ namespace PeriArlequin
     std::vector<std::vector<double>>            history_rows;
     std::vector<std::pair<double, std::string>> fe_records, pd_records;
     std::vector<std::string>                    postprocessor_states;
+    /** The contact model's own state (a projectile's motion; Contact::save_state()). */
+    std::string contact_state;
     /** The other files of the checkpoint (the mesh and its cell data) and their checksums. */
     std::vector<std::pair<std::string, std::uint64_t>> files;
 
@@ -48,7 +50,7 @@ namespace PeriArlequin
     {
       archive &format &dimension &parameters &n_ranks &step &pd_region &converted_cells
         &repartitions &conversion_energy &fe_work &running_damage &pd_work &history_names
-          &history_rows &fe_records &pd_records &postprocessor_states &files;
+          &history_rows &fe_records &pd_records &postprocessor_states &contact_state &files;
     }
   };
 
