@@ -190,7 +190,8 @@ namespace PeriArlequin
     if (deepest == least)
       allowed << " (at " << where << ")";
     std::ostringstream value;
-    value << position;
+    for (unsigned int d = 0; d < dim; ++d)
+      value << (d > 0 ? ", " : "") << position[d];
     throw_invalid_parameter(prefix + "Position", value.str(), allowed.str());
   }
 
@@ -203,23 +204,32 @@ namespace PeriArlequin
     const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
     const auto     &u     = zone.get_state().displacement;
     nodes.clear();
-    std::vector<Point<dim>> current;
     for (const auto &[first, vertex] :
          boundary_vertices(zone, boundary_ids, prefix + "Boundary ids"))
       if (owned.is_element(first))
         {
           std::array<unsigned int, dim> dofs;
-          Point<dim>                    x = vertex.position;
           for (unsigned int d = 0; d < dim; ++d)
-            {
-              dofs[d] = owned.index_within_set(vertex.dofs[d]);
-              x[d] += u.local_element(dofs[d]);
-            }
+            dofs[d] = owned.index_within_set(vertex.dofs[d]);
           nodes.emplace_back(dofs, vertex.position);
-          current.push_back(x);
         }
-    if (!started)
-      check_starts_outside(current, 0.);
+    if (started)
+      return;
+    // Every vertex of the FE bodies, not only those that may touch, at its position now:
+    // a projectile inside a body (or a body inside it) is refused.
+    std::vector<Point<dim>> vertices;
+    for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial() && cell->get_fe().n_dofs_per_cell() > 0)
+        for (const unsigned int v : cell->vertex_indices())
+          if (owned.is_element(cell->vertex_dof_index(v, 0, cell->active_fe_index())))
+            {
+              Point<dim> x = cell->vertex(v);
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] += u.local_element(
+                  owned.index_within_set(cell->vertex_dof_index(v, d, cell->active_fe_index())));
+              vertices.push_back(x);
+            }
+    check_starts_outside(vertices, 0.);
   }
 
   template <int dim>
