@@ -36,7 +36,8 @@ namespace PeriArlequin
       entries.add("Model",
                   model,
                   Patterns::Selection("none|" + ContactRegistry<dim>::names()),
-                  "Contact of the FE boundary with an obstacle, by registered name (none: "
+                  "Contact of the FE boundary (and, for models that say so, of PD particles) "
+                  "with an obstacle, by registered name (none: "
                   "no contact):" +
                     ContactRegistry<dim>::documentation() +
                     "\nA model's own parameters are in the subsection of its name.");
