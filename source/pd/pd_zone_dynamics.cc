@@ -228,22 +228,36 @@ namespace PeriArlequin
     // A particle stands for its lattice cell: its centre keeps half a spacing off the surface.
     const double           radius = 0.5 * parameters.lattice_spacing;
     const BoundingBox<dim> reach  = obstacle->reach(dt, radius);
-    const auto             x      = ghosts.reference_positions();
-    const auto u = state.displacements(), v = state.velocities(), a = state.accelerations();
+    const Point<dim>      &lower  = reach.get_boundary_points().first,
+                     &upper       = reach.get_boundary_points().second;
+    const auto         x          = ghosts.reference_positions();
+    const auto         u = state.displacements(), v = state.velocities(), a = state.accelerations();
+    const unsigned int n_owned = ghosts.n_owned();
+    // Which particles lie in the reach, on the threads (a pass over every particle, bound by
+    // memory), then the few that do in the order of their numbers.
+    obstacle_near.resize(n_owned);
+    for_each_subrange(n_owned, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          bool inside = true;
+          for (unsigned int d = 0; d < dim && inside; ++d)
+            {
+              const double y = x[i][d] + u[i][d] + dt * v[i][d] + (dt * dt) * a[i][d];
+              inside         = y >= lower[d] && y <= upper[d];
+            }
+          obstacle_near[i] = inside;
+        }
+    });
     obstacle_candidates.clear();
     obstacle_positions.clear();
     obstacle_masses.clear();
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      {
-        if (alpha[i] > 0 || slave[i] || prescribed.contains(i))
-          continue;
-        const Point<dim> y = x[i] + u[i] + dt * v[i] + (dt * dt) * a[i];
-        if (!reach.point_inside(y))
-          continue;
-        obstacle_candidates.push_back(i);
-        obstacle_positions.push_back(y);
-        obstacle_masses.push_back(particle_mass(i));
-      }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (obstacle_near[i] && alpha[i] == 0 && !slave[i] && !prescribed.contains(i))
+        {
+          obstacle_candidates.push_back(i);
+          obstacle_positions.push_back(x[i] + u[i] + dt * v[i] + (dt * dt) * a[i]);
+          obstacle_masses.push_back(particle_mass(i));
+        }
   }
 
   template <int dim>

@@ -638,7 +638,11 @@ namespace PeriArlequin
     std::unique_ptr<ParticleContact<dim>>   contact;
     /** The obstacle of Contact/Model, if it acts on particles (set_obstacle()). */
     Contact<dim> *obstacle = nullptr;
-    /** Scratch of push_off_obstacle(): candidates, their positions, masses and pushes. */
+    /**
+     * Scratch of push_off_obstacle(): which particles lie in the obstacle's reach, the
+     * candidates among them, their positions, masses and pushes.
+     */
+    std::vector<unsigned char>  obstacle_near;
     std::vector<unsigned int>   obstacle_candidates;
     std::vector<Point<dim>>     obstacle_positions;
     std::vector<double>         obstacle_masses;
