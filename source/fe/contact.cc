@@ -55,6 +55,11 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  Contact<dim>::check_time_step(const double) const
+  {}
+
+  template <int dim>
   double
   Contact<dim>::obstacle_kinetic_energy() const
   {

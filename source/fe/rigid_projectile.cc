@@ -4,6 +4,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -382,6 +383,25 @@ namespace PeriArlequin
     position += dt * velocity + (0.5 * dt * dt) * acceleration;
     velocity += (0.5 * dt) * acceleration;
     started = true;
+  }
+
+  template <int dim>
+  void
+  RigidProjectile<dim>::check_time_step(const double dt) const
+  {
+    // Faster, it could pass a point of a body between two steps without ever holding it.
+    const double size = shape == Shape::flat_punch ?
+                          *std::min_element(half_sizes.begin_raw(), half_sizes.end_raw()) :
+                          radius;
+    if (velocity.norm() * dt <= size)
+      return;
+    std::ostringstream value, allowed;
+    for (unsigned int d = 0; d < dim; ++d)
+      value << (d > 0 ? ", " : "") << velocity[d];
+    allowed << "a speed that moves the projectile by less than its smallest half size or "
+            << "radius (" << size << " m) in a time step (" << dt << " s): below " << size / dt
+            << " m/s";
+    throw_invalid_parameter(prefix + "Velocity", value.str(), allowed.str());
   }
 
   template <int dim>

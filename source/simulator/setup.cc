@@ -154,6 +154,8 @@ namespace PeriArlequin
                 << " s (2/sqrt(lambda_max(M^-1 K)) of this discretisation and material)";
         throw_invalid_parameter("Time/Time step", dt, allowed.str());
       }
+    if (contact)
+      contact->check_time_step(dt);
   }
 
   template <int dim>

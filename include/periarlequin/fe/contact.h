@@ -105,6 +105,10 @@ namespace PeriArlequin
     virtual BoundingBox<dim>
     reach(const double time_step, const double radius) const;
 
+    /** Refuse a time step the model cannot work with (at set-up); by default any. */
+    virtual void
+    check_time_step(const double time_step) const;
+
     /** The obstacle's own kinetic energy [J; J/m in 2D], the same on every rank (0: fixed). */
     virtual double
     obstacle_kinetic_energy() const;

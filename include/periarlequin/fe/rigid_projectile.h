@@ -74,6 +74,10 @@ namespace PeriArlequin
     BoundingBox<dim>
     reach(const double time_step, const double radius) const override;
 
+    /** Refuse a speed that crosses the projectile's smallest size in a step. */
+    void
+    check_time_step(const double time_step) const override;
+
     double
     obstacle_kinetic_energy() const override;
     /**
