@@ -31,6 +31,17 @@ namespace PeriArlequin
         t[d] = value;
       return t;
     }
+
+    /** A vector as a parameter file gives it: "x, y(, z)". */
+    template <int dim>
+    std::string
+    as_entry(const Tensor<1, dim> &vector)
+    {
+      std::ostringstream text;
+      for (unsigned int d = 0; d < dim; ++d)
+        text << (d > 0 ? ", " : "") << vector[d];
+      return text.str();
+    }
   } // namespace
 
   template <int dim>
@@ -190,10 +201,7 @@ namespace PeriArlequin
             << "with half a lattice spacing around them); a point lies " << -least << " m inside";
     if (deepest == least)
       allowed << " (at " << where << ")";
-    std::ostringstream value;
-    for (unsigned int d = 0; d < dim; ++d)
-      value << (d > 0 ? ", " : "") << position[d];
-    throw_invalid_parameter(prefix + "Position", value.str(), allowed.str());
+    throw_invalid_parameter(prefix + "Position", as_entry(position), allowed.str());
   }
 
   template <int dim>
@@ -395,13 +403,11 @@ namespace PeriArlequin
                           radius;
     if (velocity.norm() * dt <= size)
       return;
-    std::ostringstream value, allowed;
-    for (unsigned int d = 0; d < dim; ++d)
-      value << (d > 0 ? ", " : "") << velocity[d];
+    std::ostringstream allowed;
     allowed << "a speed that moves the projectile by less than its smallest half size or "
             << "radius (" << size << " m) in a time step (" << dt << " s): below " << size / dt
             << " m/s";
-    throw_invalid_parameter(prefix + "Velocity", value.str(), allowed.str());
+    throw_invalid_parameter(prefix + "Velocity", as_entry(velocity), allowed.str());
   }
 
   template <int dim>
