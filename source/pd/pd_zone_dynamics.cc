@@ -253,11 +253,18 @@ namespace PeriArlequin
     obstacle_masses.clear();
     for (unsigned int i = 0; i < n_owned; ++i)
       if (obstacle_near[i] && alpha[i] == 0 && !slave[i] && !prescribed.contains(i))
-        {
-          obstacle_candidates.push_back(i);
-          obstacle_positions.push_back(x[i] + u[i] + dt * v[i] + (dt * dt) * a[i]);
-          obstacle_masses.push_back(particle_mass(i));
-        }
+        obstacle_candidates.push_back(i);
+    // In the order of the particle ids, which a repartition or a resumed run keeps: the
+    // obstacle sums its force in that order.
+    const auto ids = ghosts.ids();
+    std::sort(obstacle_candidates.begin(),
+              obstacle_candidates.end(),
+              [&](const unsigned int i, const unsigned int j) { return ids[i] < ids[j]; });
+    for (const unsigned int i : obstacle_candidates)
+      {
+        obstacle_positions.push_back(x[i] + u[i] + dt * v[i] + (dt * dt) * a[i]);
+        obstacle_masses.push_back(particle_mass(i));
+      }
   }
 
   template <int dim>
