@@ -5,8 +5,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <iomanip>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -359,21 +360,31 @@ namespace PeriArlequin
   std::string
   RigidProjectile<dim>::save_state() const
   {
-    std::ostringstream state;
-    state << std::setprecision(17);
+    // The doubles' bytes: the motion restored exactly.
+    std::array<double, 3 * dim> values;
     for (unsigned int d = 0; d < dim; ++d)
-      state << position[d] << ' ' << velocity[d] << ' ' << acceleration[d] << ' ';
-    return state.str();
+      {
+        values[d]           = position[d];
+        values[dim + d]     = velocity[d];
+        values[2 * dim + d] = acceleration[d];
+      }
+    return std::string(reinterpret_cast<const char *>(values.data()), sizeof(values));
   }
 
   template <int dim>
   void
-  RigidProjectile<dim>::load_state(const std::string &text)
+  RigidProjectile<dim>::load_state(const std::string &state)
   {
-    std::istringstream state(text);
+    std::array<double, 3 * dim> values;
+    AssertThrow(state.size() == sizeof(values),
+                ExcMessage("The checkpoint holds no rigid projectile state."));
+    std::memcpy(values.data(), state.data(), sizeof(values));
     for (unsigned int d = 0; d < dim; ++d)
-      state >> position[d] >> velocity[d] >> acceleration[d];
-    AssertThrow(state, ExcMessage("The checkpoint holds no rigid projectile state."));
+      {
+        position[d]     = values[d];
+        velocity[d]     = values[dim + d];
+        acceleration[d] = values[2 * dim + d];
+      }
     started = true;
   }
 
