@@ -170,6 +170,21 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  bool
+  RigidProjectile<dim>::push_out(const Tensor<1, dim> &y,
+                                 const double          point_radius,
+                                 const double          dt,
+                                 Tensor<1, dim>       &push) const
+  {
+    Tensor<1, dim> n;
+    const double   gap = signed_distance(y, n) - point_radius;
+    if (gap >= 0)
+      return false;
+    push = (-gap / (dt * dt)) * n;
+    return true;
+  }
+
+  template <int dim>
   Point<dim>
   RigidProjectile<dim>::next_centre(const double dt) const
   {
@@ -261,21 +276,31 @@ namespace PeriArlequin
             const unsigned int i = dofs[d];
             next[d] += u.local_element(i) + dt * v.local_element(i) + dt * dt * a.local_element(i);
           }
-        Tensor<1, dim> n;
-        const double   gap = signed_distance(next - centre, n);
-        if (gap >= 0)
+        Tensor<1, dim> push;
+        if (!push_out(next - centre, 0., dt, push))
           continue;
-        const double   push = -gap / (dt * dt);
         Tensor<1, dim> force;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            a.local_element(dofs[d]) += push * n[d];
-            force[d] = mass_vector.local_element(dofs[d]) * push * n[d];
+            a.local_element(dofs[d]) += push[d];
+            force[d] = mass_vector.local_element(dofs[d]) * push[d];
           }
         on_nodes.add(force, next - centre);
       }
-    this->local_force    = on_nodes.force + on_particles.force;
-    this->local_touching = on_nodes.touching + on_particles.touching;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidProjectile<dim>::total_force() const
+  {
+    return exerted_force;
+  }
+
+  template <int dim>
+  unsigned int
+  RigidProjectile<dim>::n_touching_nodes() const
+  {
+    return touching_points;
   }
 
   template <int dim>
@@ -309,15 +334,9 @@ namespace PeriArlequin
     on_particles = Exerted();
     for (unsigned int k = 0; k < next_position.size(); ++k)
       {
-        Tensor<1, dim> n;
-        const double   gap = signed_distance(next_position[k] - centre, n) - particle_radius;
-        if (gap >= 0)
-          continue;
-        push[k] = (-gap / (dt * dt)) * n;
-        on_particles.add(particle_mass[k] * push[k], next_position[k] - centre);
+        if (push_out(next_position[k] - centre, particle_radius, dt, push[k]))
+          on_particles.add(particle_mass[k] * push[k], next_position[k] - centre);
       }
-    this->local_force    = on_nodes.force + on_particles.force;
-    this->local_touching = on_nodes.touching + on_particles.touching;
   }
 
   template <int dim>
@@ -445,30 +464,35 @@ namespace PeriArlequin
   void
   RigidProjectile<dim>::compute_accelerations(const double)
   {
-    // One sum over the ranks: force, magnitudes, second moment.
-    double sums[dim + 1 + dim * dim] = {};
+    // One sum over the ranks: force, magnitudes, touching points, second moment.
+    constexpr unsigned int n_sums        = dim + 2 + dim * dim;
+    double                 sums[n_sums]  = {};
+    const unsigned int     moment_offset = dim + 2;
     for (const Exerted *exerted : {&on_nodes, &on_particles})
       {
         for (unsigned int d = 0; d < dim; ++d)
           sums[d] += exerted->force[d];
         sums[dim] += exerted->magnitude;
+        sums[dim + 1] += exerted->touching;
         for (unsigned int d = 0; d < dim; ++d)
           for (unsigned int e = 0; e < dim; ++e)
-            sums[dim + 1 + d * dim + e] += exerted->second_moment[d][e];
+            sums[moment_offset + d * dim + e] += exerted->second_moment[d][e];
       }
-    Utilities::MPI::sum(ArrayView<const double>(sums, dim + 1 + dim * dim),
+    Utilities::MPI::sum(ArrayView<const double>(sums, n_sums),
                         this->communicator,
-                        ArrayView<double>(sums, dim + 1 + dim * dim));
+                        ArrayView<double>(sums, n_sums));
     Tensor<1, dim> force;
     Tensor<2, dim> moment;
     for (unsigned int d = 0; d < dim; ++d)
       {
         force[d] = sums[d];
         for (unsigned int e = 0; e < dim; ++e)
-          moment[d][e] = sums[dim + 1 + d * dim + e];
+          moment[d][e] = sums[moment_offset + d * dim + e];
       }
-    acceleration   = -force / mass;
-    contact_radius = 0;
+    exerted_force   = force;
+    touching_points = static_cast<unsigned int>(sums[dim + 1]);
+    acceleration    = -force / mass;
+    contact_radius  = 0;
     if (sums[dim] > 0 && force.norm() > 0)
       {
         const Tensor<1, dim> along = force / force.norm();

@@ -58,6 +58,15 @@ namespace PeriArlequin
             typename Contact<dim>::VectorType       &acceleration,
             typename Contact<dim>::VectorType       &applied_force) override;
 
+    /**
+     * The force on the bodies and the points (nodes and particles) in contact, over all
+     * ranks, as the last compute_accelerations() summed them.
+     */
+    Tensor<1, dim>
+    total_force() const override;
+    unsigned int
+    n_touching_nodes() const override;
+
     // Contact with PD particles.
     bool
     acts_on_particles() const override;
@@ -147,6 +156,16 @@ namespace PeriArlequin
     /** The centre at the end of the next step, from the present motion. */
     Point<dim>
     next_centre(const double time_step) const;
+    /**
+     * The push (acceleration) that moves the point @p y (relative to the next centre) of
+     * contact radius @p point_radius out of the projectile in a step of @p dt; false if it
+     * is outside already.
+     */
+    bool
+    push_out(const Tensor<1, dim> &y,
+             const double          point_radius,
+             const double          dt,
+             Tensor<1, dim>       &push) const;
     /** Refuse a point of the bodies that starts within @p radius of the surface (inside). */
     void
     check_starts_outside(const std::vector<Point<dim>> &positions, const double radius) const;
@@ -182,8 +201,13 @@ namespace PeriArlequin
       add(const Tensor<1, dim> &f, const Tensor<1, dim> &r);
     };
     Exerted on_nodes, on_particles;
-    /** The RMS radius of the contact forces over all ranks at the last step [m]. */
-    double contact_radius = 0;
+    /**
+     * Over all ranks at the last step: the force on the bodies [N], the points in contact and
+     * the RMS radius of the contact forces [m].
+     */
+    Tensor<1, dim> exerted_force;
+    unsigned int   touching_points = 0;
+    double         contact_radius  = 0;
   };
 } // namespace PeriArlequin
 
