@@ -26,6 +26,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  bool
+  Contact<dim>::needs_particles() const
+  {
+    return false;
+  }
+
+  template <int dim>
   void
   Contact<dim>::check_particles(const MPI_Comm, const double, const std::vector<Point<dim>> &)
   {}
@@ -178,6 +185,56 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::vector<BoundaryFace<dim>>
+  all_boundary_faces(const FEZone<dim>            &zone,
+                     const std::set<unsigned int> &boundary_ids,
+                     const std::string            &parameter)
+  {
+    internal::check_boundary_ids(zone, boundary_ids, parameter);
+    // Each boundary face belongs to one owned cell: its first DoFs and positions, then the
+    // outward direction, as numbers to gather.
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_face;
+    std::vector<double>    mine;
+    for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              (boundary_ids.empty() || boundary_ids.count(cell->face(f)->boundary_id())))
+            {
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    mine.push_back(cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index()));
+                  for (unsigned int d = 0; d < dim; ++d)
+                    mine.push_back(cell->face(f)->vertex(v)[d]);
+                }
+              const Tensor<1, dim> outward = cell->face(f)->center() - cell->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                mine.push_back(outward[d]);
+            }
+    const unsigned int vertex_width = 2 * dim, face_width = n_vertices * vertex_width + dim;
+    std::vector<BoundaryFace<dim>> faces;
+    for (const auto &part :
+         Utilities::MPI::all_gather(zone.get_dof_handler().get_communicator(), mine))
+      for (unsigned int at = 0; at + face_width <= part.size(); at += face_width)
+        {
+          BoundaryFace<dim> face;
+          face.vertices.resize(n_vertices);
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                face.vertices[v].dofs[d] =
+                  static_cast<types::global_dof_index>(part[at + v * vertex_width + d]);
+                face.vertices[v].position[d] = part[at + v * vertex_width + dim + d];
+              }
+          for (unsigned int d = 0; d < dim; ++d)
+            face.outward[d] = part[at + n_vertices * vertex_width + d];
+          faces.push_back(face);
+        }
+    return faces;
+  }
+
+  template <int dim>
   void
   RigidWallContact<dim>::initialize(const FEZone<dim> &zone)
   {
@@ -270,6 +327,10 @@ namespace PeriArlequin
   boundary_vertices(const FEZone<2> &, const std::set<unsigned int> &, const std::string &);
   template std::map<types::global_dof_index, BoundaryVertex<3>>
   boundary_vertices(const FEZone<3> &, const std::set<unsigned int> &, const std::string &);
+  template std::vector<BoundaryFace<2>>
+  all_boundary_faces(const FEZone<2> &, const std::set<unsigned int> &, const std::string &);
+  template std::vector<BoundaryFace<3>>
+  all_boundary_faces(const FEZone<3> &, const std::set<unsigned int> &, const std::string &);
   template class PluginRegistry<Contact<2>>;
   template class PluginRegistry<Contact<3>>;
 

@@ -56,84 +56,6 @@ namespace PeriArlequin
                                 "boundaries must differ)");
   }
 
-  namespace
-  {
-    /** Positions in lexicographic order (x first), to sort nodes the same on every partition. */
-    template <int dim>
-    bool
-    position_before(const Point<dim> &a, const Point<dim> &b)
-    {
-      for (int d = dim - 1; d >= 0; --d)
-        if (a[d] != b[d])
-          return a[d] < b[d];
-      return false;
-    }
-
-    /** The shape values of a Q1 face (2 or 4 vertices, deal.II's order) at @p xi. */
-    template <int dim>
-    std::vector<double>
-    face_shape_values(const std::array<double, 2> &xi)
-    {
-      if (dim == 2)
-        return {1 - xi[0], xi[0]};
-      return {(1 - xi[0]) * (1 - xi[1]), xi[0] * (1 - xi[1]), (1 - xi[0]) * xi[1], xi[0] * xi[1]};
-    }
-
-    /**
-     * The closest point of a Q1 face (@p x its vertices) to @p p: its face coordinates,
-     * found by Gauss-Newton (exact in one step on a parallelogram), and the face's unit
-     * normal there, oriented along @p outward.
-     */
-    template <int dim>
-    std::pair<std::array<double, 2>, Tensor<1, dim>>
-    project_onto_face(const std::vector<Point<dim>> &x,
-                      const Point<dim>              &p,
-                      const Tensor<1, dim>          &outward)
-    {
-      std::array<double, 2>         xi = {{0.5, 0.5}};
-      std::array<Tensor<1, dim>, 2> tangent;
-      for (unsigned int iteration = 0; iteration < 20; ++iteration)
-        {
-          Point<dim> position;
-          const auto N = face_shape_values<dim>(xi);
-          for (unsigned int j = 0; j < x.size(); ++j)
-            position += N[j] * Tensor<1, dim>(x[j]);
-          if (dim == 2)
-            tangent[0] = x[1] - x[0];
-          else
-            {
-              tangent[0] = (1 - xi[1]) * (x[1] - x[0]) + xi[1] * (x[3] - x[2]);
-              tangent[1] = (1 - xi[0]) * (x[2] - x[0]) + xi[0] * (x[3] - x[1]);
-            }
-          const Tensor<1, dim>  r    = p - position;
-          std::array<double, 2> step = {{0, 0}};
-          if (dim == 2)
-            step[0] = (r * tangent[0]) / (tangent[0] * tangent[0]);
-          else
-            {
-              const double a = tangent[0] * tangent[0], b = tangent[0] * tangent[1],
-                           c = tangent[1] * tangent[1], det = a * c - b * b;
-              const double r0 = r * tangent[0], r1 = r * tangent[1];
-              step[0] = (c * r0 - b * r1) / det;
-              step[1] = (a * r1 - b * r0) / det;
-            }
-          xi[0] += step[0];
-          xi[1] += step[1];
-          if (std::abs(step[0]) + std::abs(step[1]) < 1e-14)
-            break;
-        }
-      Tensor<1, dim> normal;
-      if constexpr (dim == 2)
-        normal = Tensor<1, dim>({tangent[0][1], -tangent[0][0]});
-      else
-        normal = cross_product_3d(tangent[0], tangent[1]);
-      normal /= normal.norm();
-      if (normal * outward < 0)
-        normal *= -1;
-      return {xi, normal};
-    }
-  } // namespace
-
   template <int dim>
   void
   ElasticTargetContact<dim>::initialize(const FEZone<dim> &zone)
@@ -143,56 +65,27 @@ namespace PeriArlequin
     const IndexSet    &owned           = zone.get_dof_handler().locally_owned_dofs();
     const unsigned int n_face_vertices = GeometryInfo<dim>::vertices_per_face;
 
-    // Every rank's owned striker vertices and owned target faces (each boundary face belongs
-    // to one owned cell), gathered on all ranks.
+    // Every rank's owned striker vertices, gathered on all ranks, and the target's faces.
     std::vector<double> mine;
-    const auto          add_vertex = [&](const BoundaryVertex<dim> &vertex) {
-      for (unsigned int d = 0; d < dim; ++d)
-        mine.push_back(vertex.dofs[d]);
-      for (unsigned int d = 0; d < dim; ++d)
-        mine.push_back(vertex.position[d]);
-    };
     for (const auto &[first, vertex] :
          boundary_vertices(zone, striker_ids, "Contact/elastic target/Striker boundary ids"))
       if (owned.is_element(first))
-        add_vertex(vertex);
-    std::vector<double> faces;
-    internal::check_boundary_ids(zone, target_ids, "Contact/elastic target/Target boundary ids");
-    for (const auto &cell : zone.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 && cell->at_boundary())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) && target_ids.count(cell->face(f)->boundary_id()))
-            {
-              for (unsigned int v = 0; v < n_face_vertices; ++v)
-                {
-                  for (unsigned int d = 0; d < dim; ++d)
-                    faces.push_back(cell->face(f)->vertex_dof_index(v, d, cell->active_fe_index()));
-                  for (unsigned int d = 0; d < dim; ++d)
-                    faces.push_back(cell->face(f)->vertex(v)[d]);
-                }
-              const Tensor<1, dim> outward = cell->face(f)->center() - cell->center();
-              for (unsigned int d = 0; d < dim; ++d)
-                faces.push_back(outward[d]);
-            }
-    const auto all_striker = Utilities::MPI::all_gather(this->communicator, mine);
-    const auto all_faces   = Utilities::MPI::all_gather(this->communicator, faces);
-
-    // The striker vertices, then the target's vertices, as one sorted list of nodes.
-    const unsigned int vertex_width = 2 * dim, face_width = n_face_vertices * vertex_width + dim;
-    const auto         read_vertex = [&](const std::vector<double> &data, const unsigned int at) {
-      BoundaryVertex<dim> vertex;
-      for (unsigned int d = 0; d < dim; ++d)
         {
-          vertex.dofs[d]     = static_cast<types::global_dof_index>(data[at + d]);
-          vertex.position[d] = data[at + dim + d];
+          for (unsigned int d = 0; d < dim; ++d)
+            mine.push_back(vertex.dofs[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            mine.push_back(vertex.position[d]);
         }
-      return vertex;
-    };
     std::map<types::global_dof_index, BoundaryVertex<dim>> striker, target;
-    for (const auto &part : all_striker)
-      for (unsigned int at = 0; at + vertex_width <= part.size(); at += vertex_width)
+    for (const auto &part : Utilities::MPI::all_gather(this->communicator, mine))
+      for (unsigned int at = 0; at + 2 * dim <= part.size(); at += 2 * dim)
         {
-          const auto vertex       = read_vertex(part, at);
+          BoundaryVertex<dim> vertex;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              vertex.dofs[d]     = static_cast<types::global_dof_index>(part[at + d]);
+              vertex.position[d] = part[at + dim + d];
+            }
           striker[vertex.dofs[0]] = vertex;
         }
     struct Face
@@ -202,27 +95,25 @@ namespace PeriArlequin
       Tensor<1, dim>                       outward;
     };
     std::vector<Face> target_faces;
-    for (const auto &part : all_faces)
-      for (unsigned int at = 0; at + face_width <= part.size(); at += face_width)
-        {
-          Face face;
-          for (unsigned int v = 0; v < n_face_vertices; ++v)
-            {
-              const auto vertex = read_vertex(part, at + v * vertex_width);
-              if (striker.count(vertex.dofs[0]))
-                throw_invalid_parameter("Contact/elastic target/Target boundary ids",
-                                        internal::prm_list(target_ids),
-                                        "boundaries of another body than the striker's: "
-                                        "the target shares a vertex with the striker's "
-                                        "boundary (mesh the two bodies apart)");
-              target[vertex.dofs[0]] = vertex;
-              face.first_dofs.push_back(vertex.dofs[0]);
-              face.vertices.push_back(vertex.position);
-            }
-          for (unsigned int d = 0; d < dim; ++d)
-            face.outward[d] = part[at + n_face_vertices * vertex_width + d];
-          target_faces.push_back(face);
-        }
+    for (const auto &boundary_face :
+         all_boundary_faces(zone, target_ids, "Contact/elastic target/Target boundary ids"))
+      {
+        Face face;
+        for (const auto &vertex : boundary_face.vertices)
+          {
+            if (striker.count(vertex.dofs[0]))
+              throw_invalid_parameter("Contact/elastic target/Target boundary ids",
+                                      internal::prm_list(target_ids),
+                                      "boundaries of another body than the striker's: "
+                                      "the target shares a vertex with the striker's "
+                                      "boundary (mesh the two bodies apart)");
+            target[vertex.dofs[0]] = vertex;
+            face.first_dofs.push_back(vertex.dofs[0]);
+            face.vertices.push_back(vertex.position);
+          }
+        face.outward = boundary_face.outward;
+        target_faces.push_back(face);
+      }
     AssertThrow(!striker.empty(),
                 ExcMessage("Invalid input: 'Contact/elastic target/Striker boundary ids' "
                            "selects no FE boundary vertex; allowed: ids of boundaries that "
@@ -237,7 +128,7 @@ namespace PeriArlequin
       for (const auto &entry : *set)
         nodes.push_back(entry.second);
     std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
-      return position_before(a.position, b.position);
+      return internal::position_before(a.position, b.position);
     });
     std::map<types::global_dof_index, unsigned int> node_of;
     for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -258,12 +149,12 @@ namespace PeriArlequin
         for (const auto &face : target_faces)
           {
             const auto [xi, normal] =
-              project_onto_face(face.vertices, nodes[k].position, face.outward);
+              internal::project_onto_face(face.vertices, nodes[k].position, face.outward);
             const double tolerance = 1e-10;
             if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
                 (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
               continue;
-            const auto N = face_shape_values<dim>(xi);
+            const auto N = internal::face_shape_values<dim>(xi);
             Point<dim> foot;
             for (unsigned int j = 0; j < n_face_vertices; ++j)
               foot += N[j] * Tensor<1, dim>(face.vertices[j]);

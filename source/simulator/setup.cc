@@ -43,6 +43,12 @@ namespace PeriArlequin
                               "this one acts on FE boundary nodes and the case has no FE cells");
     if (pd_zone)
       initialize_pd_zone(dt);
+    else if (contact && contact->needs_particles())
+      throw_invalid_parameter("Contact/Model",
+                              contact_model,
+                              "a model of FE contact (rigid wall, elastic target, rigid "
+                              "projectile): this one acts between PD particles and FE faces "
+                              "and the case has no PD zone (Peridynamics/Region)");
     check_time_step();
     create_integrator();
     if (!resumed && time_parameters.integration != Parameters::Integration::explicit_dynamics)
@@ -162,10 +168,12 @@ namespace PeriArlequin
   void
   Simulator<dim>::create_integrator()
   {
-    if (pd_zone)
-      zones.push_back(pd_zone.get());
+    // The FE zone first: contact between PD particles and FE faces moves both sides when the
+    // PD zone pushes its particles, once the FE accelerations are complete.
     if (fe_zone)
       zones.push_back(fe_zone.get());
+    if (pd_zone)
+      zones.push_back(pd_zone.get());
     // A moving obstacle (a projectile) steps with the zones, after those it touches.
     if (auto *moving_obstacle = dynamic_cast<IntegratedZone *>(contact.get()))
       zones.push_back(moving_obstacle);

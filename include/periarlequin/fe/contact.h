@@ -73,6 +73,10 @@ namespace PeriArlequin
     virtual bool
     acts_on_particles() const;
 
+    /** Does the model need PD particles (contact between particles and FE faces)? No by default. */
+    virtual bool
+    needs_particles() const;
+
     /**
      * Before the first step: refuse particles that start inside the obstacle, given the
      * current positions of the owned particles that may touch it and their contact radius
@@ -176,6 +180,26 @@ namespace PeriArlequin
   boundary_vertices(const FEZone<dim>            &zone,
                     const std::set<unsigned int> &boundary_ids,
                     const std::string            &parameter);
+
+  /** A face of the FE boundary: its vertices, in deal.II's order, and a direction out of its cell.
+   */
+  template <int dim>
+  struct BoundaryFace
+  {
+    std::vector<BoundaryVertex<dim>> vertices;
+    Tensor<1, dim>                   outward;
+  };
+
+  /**
+   * The faces with boundary id in @p boundary_ids (all if empty) of the FE cells of every
+   * rank, gathered on all ranks in rank order; refuses ids the mesh does not have and
+   * elements other than FE_Q(1)^dim as boundary_vertices() does.
+   */
+  template <int dim>
+  std::vector<BoundaryFace<dim>>
+  all_boundary_faces(const FEZone<dim>            &zone,
+                     const std::set<unsigned int> &boundary_ids,
+                     const std::string            &parameter);
 
   /**
    * Frictionless unilateral contact with a fixed rigid plane, enforced kinematically as

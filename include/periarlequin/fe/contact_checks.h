@@ -9,8 +9,7 @@
 #include <sstream>
 #include <string>
 
-// The input checks the contact models share (source/fe/contact.cc and
-// elastic_target_contact.cc).
+// The input checks and the face geometry the contact models share.
 namespace PeriArlequin
 {
   namespace internal
@@ -59,6 +58,80 @@ namespace PeriArlequin
                                    "vertex masses)."));
             return;
           }
+    }
+    /** Positions in lexicographic order (x first), to sort nodes the same on every partition. */
+    template <int dim>
+    bool
+    position_before(const Point<dim> &a, const Point<dim> &b)
+    {
+      for (int d = dim - 1; d >= 0; --d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    }
+
+    /** The shape values of a Q1 face (2 or 4 vertices, deal.II's order) at @p xi. */
+    template <int dim>
+    inline std::vector<double>
+    face_shape_values(const std::array<double, 2> &xi)
+    {
+      if (dim == 2)
+        return {1 - xi[0], xi[0]};
+      return {(1 - xi[0]) * (1 - xi[1]), xi[0] * (1 - xi[1]), (1 - xi[0]) * xi[1], xi[0] * xi[1]};
+    }
+
+    /**
+     * The closest point of a Q1 face (@p x its vertices) to @p p: its face coordinates,
+     * found by Gauss-Newton (exact in one step on a parallelogram), and the face's unit
+     * normal there, oriented along @p outward.
+     */
+    template <int dim>
+    std::pair<std::array<double, 2>, Tensor<1, dim>>
+    project_onto_face(const std::vector<Point<dim>> &x,
+                      const Point<dim>              &p,
+                      const Tensor<1, dim>          &outward)
+    {
+      std::array<double, 2>         xi = {{0.5, 0.5}};
+      std::array<Tensor<1, dim>, 2> tangent;
+      for (unsigned int iteration = 0; iteration < 20; ++iteration)
+        {
+          Point<dim> position;
+          const auto N = face_shape_values<dim>(xi);
+          for (unsigned int j = 0; j < x.size(); ++j)
+            position += N[j] * Tensor<1, dim>(x[j]);
+          if (dim == 2)
+            tangent[0] = x[1] - x[0];
+          else
+            {
+              tangent[0] = (1 - xi[1]) * (x[1] - x[0]) + xi[1] * (x[3] - x[2]);
+              tangent[1] = (1 - xi[0]) * (x[2] - x[0]) + xi[0] * (x[3] - x[1]);
+            }
+          const Tensor<1, dim>  r    = p - position;
+          std::array<double, 2> step = {{0, 0}};
+          if (dim == 2)
+            step[0] = (r * tangent[0]) / (tangent[0] * tangent[0]);
+          else
+            {
+              const double a = tangent[0] * tangent[0], b = tangent[0] * tangent[1],
+                           c = tangent[1] * tangent[1], det = a * c - b * b;
+              const double r0 = r * tangent[0], r1 = r * tangent[1];
+              step[0] = (c * r0 - b * r1) / det;
+              step[1] = (a * r1 - b * r0) / det;
+            }
+          xi[0] += step[0];
+          xi[1] += step[1];
+          if (std::abs(step[0]) + std::abs(step[1]) < 1e-14)
+            break;
+        }
+      Tensor<1, dim> normal;
+      if constexpr (dim == 2)
+        normal = Tensor<1, dim>({tangent[0][1], -tangent[0][0]});
+      else
+        normal = cross_product_3d(tangent[0], tangent[1]);
+      normal /= normal.norm();
+      if (normal * outward < 0)
+        normal *= -1;
+      return {xi, normal};
     }
   } // namespace internal
 } // namespace PeriArlequin
