@@ -116,6 +116,16 @@ namespace PeriArlequin
     // the owned particles at the lattice sites around it, with centre distance - half the
     // face's diameter bounding the distance to the face from below. The check costs the
     // boundary's size, not particles times faces.
+    // The faces of cells whose box holds no site of the extent belong to another body (an FE
+    // striker or support across a gap): the FE zone loads them.
+    const auto holds_sites = [&](const auto &cell) {
+      const auto [lower, upper] = cell_bounds(cell);
+      bool any                  = false;
+      lattice.for_each_site_in(lower, upper, [&](const auto &site) {
+        any = any || extent(lattice.position(site));
+      });
+      return any;
+    };
     const auto   x     = ghosts.reference_positions();
     bool         close = false;
     Point<dim>   where;
@@ -123,7 +133,8 @@ namespace PeriArlequin
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (!close && face->at_boundary() && face->boundary_id() < ProblemData<dim>::n_boundaries &&
-            problem_data->boundary_conditions[face->boundary_id()].type != BoundaryType::free)
+            problem_data->boundary_conditions[face->boundary_id()].type != BoundaryType::free &&
+            holds_sites(cell))
           {
             const Point<dim> centre = face->center();
             const double     radius = 0.5 * face->diameter();

@@ -23,9 +23,23 @@
 //    meets the FE end nodes at relative speed v0 (measured 0.33 %); after the release the
 //    energy stays within 1e-3 (velocity Verlet; measured 5e-6).
 //  The two collisions mirror each other: the same figures to the digits printed.
+// Third, the PD strip strikes the FE strip whose struck end (its faces' nodes) is clamped:
+// fragments against a support. The FE face is a rigid wall: the contact lasts 2 L / c_PD
+// and the PD strip leaves at -v0; the FE strip does not move.
+//  - Duration within 5 % of 2 L / c and the mean force within 5 % of rho c v0 A: the PD
+//    strip alone sets both here, and with 16 particles across it is stiffer than the 1D bar
+//    (its free edges; measured 0.965 and 1.035, and 0.977 and 1.022 at dx = 0.125 mm).
+//  - Momentum after / (M v0) within 0.02 of -1 (measured -0.993).
+//  - The FE strip's kinetic energy exactly 0 (the force goes to clamped components only).
+//  - The support reactions' impulse (applied force at the clamped DoFs, which take the
+//    contact force) equals the PD strip's momentum change to 1e-10 of M v0: the only
+//    external force on the two bodies (the pair forces are equal and opposite at every step).
 // The 2-rank run (.mpirun=2.output) repeats the collisions and compares each with rank 0
 // alone: histories within 1e-10 of each column's scale (the pairs are solved on every rank
 // in the same order).
+
+#include <iterator>
+#include <numeric>
 
 #include "../tests.h"
 
@@ -35,13 +49,47 @@ namespace
 {
   const double L = 0.05, A = 0.004, E = 200e9, rho = 7800, v0 = 1, dt = 2e-8, T = 40e-6, gap = 1e-6;
 
+  /** two_bars.msh with the target's struck end (physical tag 11) as boundary 1. */
   std::string
-  case_text(const bool pd_strikes)
+  clamped_target_mesh()
+  {
+    const std::string name = "two_bars_clamped_target.msh";
+    if (is_root())
+      {
+        std::ifstream in(PERIARLEQUIN_SOURCE_DIR "/tests/fe/two_bars.msh");
+        std::ofstream out(name);
+        std::string   line;
+        bool          elements = false;
+        while (std::getline(in, line))
+          {
+            elements = (elements || line == "$Elements") && line != "$EndElements";
+            std::istringstream fields(line);
+            std::vector<long>  numbers{std::istream_iterator<long>(fields),
+                                      std::istream_iterator<long>()};
+            if (elements && numbers.size() > 5 && numbers[3] == 11)
+              {
+                numbers[3] = 1;
+                for (unsigned int k = 0; k < numbers.size(); ++k)
+                  out << (k > 0 ? " " : "") << numbers[k];
+                out << '\n';
+              }
+            else
+              out << line << '\n';
+          }
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    return name;
+  }
+
+  std::string
+  case_text(const bool pd_strikes, const bool clamped = false)
   {
     std::ostringstream prm;
     prm << std::setprecision(17) << "set Dimension = 2\n"
-        << "subsection Geometry\n  set Mesh file = " PERIARLEQUIN_SOURCE_DIR
-           "/tests/fe/two_bars.msh\nend\n"
+        << "subsection Geometry\n  set Mesh file = "
+        << (clamped ? clamped_target_mesh() :
+                      std::string(PERIARLEQUIN_SOURCE_DIR "/tests/fe/two_bars.msh"))
+        << "\nend\n"
         << "subsection Material\n  set Young's modulus = " << E
         << "\n  set Poisson's ratio = 0\n  set Density = " << rho
         << "\n  set Two-dimensional model = plane stress\nend\n"
@@ -52,7 +100,10 @@ namespace
         << " : " << (pd_strikes ? 0. : -v0) << "; 0\n"
         << "    end\n  end\nend\n"
         << "subsection Contact\n  set Model = PD against FE\n  subsection PD against FE\n"
-        << "    set Boundary ids = 11\n  end\nend\n"
+        << "    set Boundary ids = " << (clamped ? 1 : 11) << "\n  end\nend\n"
+        << (clamped ? "subsection Boundary conditions\n  subsection Boundary 1\n"
+                      "    set Type = displacement\n  end\nend\n" :
+                      "")
         << "subsection Time\n  set Time step = " << dt << "\n  set End time = " << T << "\nend\n"
         << "subsection Postprocess\n  set List of postprocessors = energies, contact forces\nend\n"
         << quiet_output();
@@ -122,6 +173,64 @@ namespace
                 std::abs(energy() - energy_at_release) / energy0,
                 1e-3);
   }
+
+  void
+  strike_support()
+  {
+    const std::string title = "PD strikes a clamped FE face";
+    const double      c = std::sqrt(E / rho), duration = 2 * L / c, mass = rho * L * A;
+    auto              simulator = make_simulator<2>(case_text(true, true));
+    simulator->setup();
+    const auto  &pd        = *simulator->get_pd_zone();
+    const auto  &fe        = simulator->get_fe_zone();
+    const auto  &contact   = *simulator->get_contact();
+    const double momentum0 = pd.linear_momentum()[0];
+    const double energy0   = pd.kinetic_energy();
+    // The x reactions of the clamped DoFs, summed over ranks.
+    const auto reaction = [&] {
+      double sum = 0;
+      for (const auto &dof : fe.get_prescribed_dofs())
+        if (dof.component == 0)
+          sum += fe.applied_forces().local_element(dof.local_index);
+      return Utilities::MPI::sum(sum, MPI_COMM_WORLD);
+    };
+    int                 first = -1, last = -1;
+    std::vector<double> forces;
+    double              impulse = 0, fe_energy = 0;
+    for (int step = 1; simulator->get_time() < T * (1 - 1e-12); ++step)
+      {
+        simulator->advance();
+        impulse += dt * reaction();
+        fe_energy = std::max(fe_energy, fe.kinetic_energy());
+        if (contact.n_touching_nodes() > 0)
+          {
+            if (first < 0)
+              first = step;
+            last = step;
+            forces.resize(step - first + 1, 0.);
+            forces.back() = contact.total_force()[0];
+          }
+      }
+    AssertThrow(first > 0, ExcMessage(title + ": no contact, the case is vacuous"));
+    const double momentum = pd.linear_momentum()[0];
+    check(title + ": contact duration / (2 L / c)", (last - first + 1) * dt / duration, 1., 0.05);
+    const unsigned int quarter = forces.size() / 4;
+    const double middle = std::accumulate(forces.begin() + quarter, forces.end() - quarter, 0.) /
+                          (forces.size() - 2 * quarter);
+    check(title + ": mean contact force over the middle half / (rho c v0 A)",
+          -middle / (rho * c * v0 * A),
+          1.,
+          0.05);
+    check(title + ": PD strip momentum after / (M v0)", momentum / (mass * v0), -1., 0.02);
+    check(title + ": FE strip's largest kinetic energy [J/m]", fe_energy, 0., 0.);
+    check(title + ": (support impulse - PD momentum change) / (M v0)",
+          (impulse - (momentum - momentum0)) / (mass * v0),
+          0.,
+          1e-10);
+    check_below(title + ": energy lost at the contact / initial energy",
+                1 - (pd.kinetic_energy() + pd.strain_energy()) / energy0,
+                0.01);
+  }
 } // namespace
 
 int
@@ -138,5 +247,11 @@ main(int argc, char **argv)
                       parallel_vs_serial_history_difference<2>(case_text(pd_strikes), "ranks"),
                       1e-10);
       }
+    strike_support();
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      check_below("PD strikes a clamped FE face: largest history difference over the column's "
+                  "scale, all ranks - rank 0 alone",
+                  parallel_vs_serial_history_difference<2>(case_text(true, true), "ranks"),
+                  1e-10);
   });
 }
