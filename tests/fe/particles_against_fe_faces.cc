@@ -56,7 +56,7 @@ namespace
     const std::string name = "two_bars_clamped_target.msh";
     if (is_root())
       {
-        std::ifstream in(PERIARLEQUIN_SOURCE_DIR "/tests/fe/two_bars.msh");
+        std::ifstream in(PERIARLEQUIN_SOURCE_DIR "/examples/two_bars/two_bars.msh");
         std::ofstream out(name);
         std::string   line;
         bool          elements = false;
@@ -88,7 +88,7 @@ namespace
     prm << std::setprecision(17) << "set Dimension = 2\n"
         << "subsection Geometry\n  set Mesh file = "
         << (clamped ? clamped_target_mesh() :
-                      std::string(PERIARLEQUIN_SOURCE_DIR "/tests/fe/two_bars.msh"))
+                      std::string(PERIARLEQUIN_SOURCE_DIR "/examples/two_bars/two_bars.msh"))
         << "\nend\n"
         << "subsection Material\n  set Young's modulus = " << E
         << "\n  set Poisson's ratio = 0\n  set Density = " << rho

@@ -43,8 +43,8 @@ namespace
     const double       c = std::sqrt(E / rho), duration = 2 * L / c, gap = 1e-6;
     std::ostringstream prm;
     prm << std::setprecision(17) << "set Dimension = 2\n"
-        << "subsection Geometry\n  set Mesh file = " PERIARLEQUIN_SOURCE_DIR "/tests/fe/" << mesh
-        << "\nend\n"
+        << "subsection Geometry\n  set Mesh file = " PERIARLEQUIN_SOURCE_DIR "/examples/two_bars/"
+        << mesh << "\nend\n"
         << "subsection Material\n  set Young's modulus = " << E
         << "\n  set Poisson's ratio = 0\n  set Density = " << rho
         << "\n  set Two-dimensional model = plane stress\nend\n"

@@ -1,4 +1,5 @@
-// Two strips 50 x 4 mm for fe/two_bars_contact: a striker [0, 50] mm and a target
+// Two strips 50 x 4 mm (fe/two_bars_contact, fe/particles_against_fe_faces, the PD against FE
+// example): a striker [0, 50] mm and a target
 // [50.001, 100.001] mm (a gap of 1 um, so that the initial velocity tells their nodes apart),
 // each of 50 x 2 quadrilaterals of 1 x 2 mm.
 // Boundary ids: 10 the striker's end x = 50 mm, 11 the target's end x = 50.001 mm, 12 the
