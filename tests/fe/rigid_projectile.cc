@@ -37,8 +37,8 @@
  *      N m_p / M = 1.2e-3 for the 4 particles in contact at most (measured 6.2e-4);
  *    - the projectile leaves: moving away and no contact at the end.
  * 4. (The 2-rank variant runs this alone.) The bounce on all ranks against rank 0 alone,
- *    and stopped half way with a checkpoint and resumed against the straight run: the energies, the contact force and points, the
- *    projectile's motion and contact radius and the block's momentum within 1e-10 of each
+ *    and stopped half way with a checkpoint and resumed against the straight run: the
+ *    energies, the contact force and points, the projectile's motion and contact radius and the block's momentum within 1e-10 of each
  *    column's scale at every record. Over ranks the projectile's force is summed in another
  *    order (measured 2e-13). The resumed run equals the straight one to the last digit
  *    written for six steps, then differs by up to 2.7e-11: not explained (the particles'
