@@ -36,14 +36,14 @@
  *      arrives, a loss of the order of the arriving particles' mass over the projectile's,
  *      N m_p / M = 1.2e-3 for the 4 particles in contact at most (measured 6.2e-4);
  *    - the projectile leaves: moving away and no contact at the end.
- * 4. (The 2-rank variant runs this alone.) The bounce on all ranks against rank 0 alone,
- *    and stopped half way with a checkpoint and resumed against the straight run: the
- *    energies, the contact force and points, the projectile's motion and contact radius and the block's momentum within 1e-10 of each
- *    column's scale at every record. Over ranks the projectile's force is summed in another
- *    order (measured 2e-13). The resumed run equals the straight one to the last digit
- *    written for six steps, then differs by up to 2.7e-11: not explained (the particles'
- *    forces are summed in id order, the motion is restored as saved; the other restart tests
- *    differ by 1e-15), a difference of round-off size that the arrivals amplify.
+ * 4. (The 2-rank variant runs this alone.) The bounce on all ranks against rank 0 alone, and
+ *    stopped half way with a checkpoint and resumed against the straight run: the energies, the
+ *    contact force and points, the projectile's motion and contact radius and the block's momentum
+ *    within 1e-10 of each column's scale at every record. Over ranks the projectile's force is
+ *    summed in another order (measured 2e-13). The resumed run equals the straight one to the last
+ *    digit written for six steps, then differs by up to 2.7e-11: not explained (the particles'
+ *    forces are summed in id order, the motion is restored as saved; the other restart tests differ
+ *    by 1e-15), a difference of round-off size that the arrivals amplify.
  */
 #include <periarlequin/simulator.h>
 
