@@ -167,7 +167,7 @@ namespace PeriArlequin
                 pair.face_nodes.clear();
                 for (const auto first : face.first_dofs)
                   pair.face_nodes.push_back(node_of[first]);
-                pair.weights = N;
+                pair.weights.assign(N.begin(), N.end());
               }
           }
         if (best != std::numeric_limits<double>::max())
@@ -235,13 +235,8 @@ namespace PeriArlequin
             mine.push_back(vector->local_element(local[d]));
         mine.push_back(mass.local_element(local[0]));
       }
-    const auto all = Utilities::MPI::all_gather(this->communicator, mine);
-    state.assign(nodes.size() * width, 0.);
-    for (unsigned int rank = 0; rank < all.size(); ++rank)
-      for (unsigned int k = 0; k < nodes_of_rank[rank].size(); ++k)
-        std::copy(all[rank].begin() + k * width,
-                  all[rank].begin() + (k + 1) * width,
-                  state.begin() + nodes_of_rank[rank][k] * width);
+    state =
+      internal::gather_node_values(mine, nodes_of_rank, nodes.size(), width, this->communicator);
   }
 
   template <int dim>

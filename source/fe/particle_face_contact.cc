@@ -121,6 +121,8 @@ namespace PeriArlequin
     for (unsigned int k = 0; k < nodes.size(); ++k)
       for (unsigned int d = 0; d < dim; ++d)
         node_position[k][d] = nodes[k].position[d] + state[k * 4 * dim + d];
+    node_travel = largest_face;
+    binned_position.clear();
     fe_acceleration = nullptr;
   }
 
@@ -142,14 +144,11 @@ namespace PeriArlequin
         for (unsigned int d = 0; d < dim; ++d)
           mine.push_back(owned_prescribed[k][d] ? 0. : 1. / mass.local_element(owned_dofs[k][d]));
       }
-    const auto          all = Utilities::MPI::all_gather(this->communicator, mine);
-    std::vector<double> state(nodes.size() * width, 0.);
-    for (unsigned int rank = 0; rank < all.size(); ++rank)
-      for (unsigned int k = 0; k < nodes_of_rank[rank].size(); ++k)
-        std::copy(all[rank].begin() + k * width,
-                  all[rank].begin() + (k + 1) * width,
-                  state.begin() + nodes_of_rank[rank][k] * width);
-    return state;
+    return internal::gather_node_values(mine,
+                                        nodes_of_rank,
+                                        nodes.size(),
+                                        width,
+                                        this->communicator);
   }
 
   template <int dim>
@@ -194,8 +193,19 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  ParticleFaceContact<dim>::bin_faces(const std::vector<Point<dim>> &x_nodes, const double reach)
+  ParticleFaceContact<dim>::bin_faces(const std::vector<Point<dim>> &x_nodes, const double within)
   {
+    // The bins hold each face where it lies within the reach and a skin; they are rebuilt
+    // only when the reach grew or a node has moved by more than the skin since.
+    const double skin = 0.25 * largest_face;
+    bool         keep = !binned_position.empty() && within <= binned_within;
+    for (unsigned int k = 0; k < x_nodes.size() && keep; ++k)
+      keep = x_nodes[k].distance(binned_position[k]) <= skin;
+    if (keep)
+      return;
+    binned_position    = x_nodes;
+    binned_within      = within;
+    const double reach = within + skin;
     // Bins of about a face: a face's box widened by the reach spans a few of them.
     bin_size = largest_face + 2. * reach;
     bins.clear();
@@ -236,9 +246,23 @@ namespace PeriArlequin
     const auto bin = bins.find(bin_of(x));
     if (bin == bins.end())
       return nearest;
-    std::vector<Point<dim>> vertices(GeometryInfo<dim>::vertices_per_face);
+    std::array<Point<dim>, GeometryInfo<dim>::vertices_per_face> vertices;
     for (const unsigned int f : bin->second)
       {
+        // A point farther than @p within from the face's box has no foot near enough.
+        bool beyond = false;
+        for (unsigned int d = 0; d < dim && !beyond; ++d)
+          {
+            double lower = x_nodes[faces[f].nodes[0]][d], upper = lower;
+            for (const unsigned int k : faces[f].nodes)
+              {
+                lower = std::min(lower, x_nodes[k][d]);
+                upper = std::max(upper, x_nodes[k][d]);
+              }
+            beyond = x[d] < lower - within || x[d] > upper + within;
+          }
+        if (beyond)
+          continue;
         for (unsigned int v = 0; v < vertices.size(); ++v)
           vertices[v] = x_nodes[faces[f].nodes[v]];
         const auto [xi, normal] = internal::project_onto_face(vertices, x, faces[f].outward);
@@ -308,7 +332,9 @@ namespace PeriArlequin
   {
     if (node_position.empty())
       return Contact<dim>::reach(time_step, radius);
-    // The nodes move less than a face in a step (the stable step of the FE cells).
+    // A particle is paired within two radii of a face's next position, which lies within two
+    // steps' travel of the positions of the last step (a face's size before the first); a
+    // tenth of the smallest face more for a travel that grows from one step to the next.
     Point<dim> lower = node_position[0], upper = lower;
     for (const Point<dim> &x : node_position)
       for (unsigned int d = 0; d < dim; ++d)
@@ -318,8 +344,8 @@ namespace PeriArlequin
         }
     for (unsigned int d = 0; d < dim; ++d)
       {
-        lower[d] -= radius + largest_face;
-        upper[d] += radius + largest_face;
+        lower[d] -= 2. * radius + 3. * node_travel + 0.1 * smallest_face;
+        upper[d] += 2. * radius + 3. * node_travel + 0.1 * smallest_face;
       }
     return BoundingBox<dim>({lower, upper});
   }
@@ -348,12 +374,16 @@ namespace PeriArlequin
           x_nodes[k][d]       = node_position[k][d] + dt * s[dim + d] + dt * dt * s[2 * dim + d];
           inverse_mass[k][d]  = s[3 * dim + d];
         }
+    node_travel = 0;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      node_travel = std::max(node_travel, x_nodes[k].distance(node_position[k]));
 
     // This rank's particles in front of a face, within a radius of touching; then every
     // rank's, on all ranks.
     const unsigned int n_face_vertices = GeometryInfo<dim>::vertices_per_face;
-    const unsigned int pair_width      = 2 * dim + n_face_vertices + 3;
+    const unsigned int pair_width      = 2 * dim + n_face_vertices + 4;
     bin_faces(x_nodes, 2. * radius);
+    const unsigned int  my_rank = Utilities::MPI::this_mpi_process(this->communicator);
     std::vector<double> mine;
     for (unsigned int p = 0; p < next_position.size(); ++p)
       {
@@ -363,6 +393,7 @@ namespace PeriArlequin
         for (unsigned int d = 0; d < dim; ++d)
           mine.push_back(next_position[p][d]);
         mine.push_back(mass[p]);
+        mine.push_back(my_rank);
         mine.push_back(p);
         mine.push_back(foot.face);
         mine.insert(mine.end(), foot.weights.begin(), foot.weights.end());
@@ -371,30 +402,29 @@ namespace PeriArlequin
       }
     struct Pair
     {
-      Point<dim>          x;
-      double              inverse_mass;
-      unsigned int        rank, particle, face;
-      std::vector<double> weights;
-      Tensor<1, dim>      normal;
+      Point<dim>                                               x;
+      double                                                   inverse_mass;
+      unsigned int                                             rank, particle, face;
+      std::array<double, GeometryInfo<dim>::vertices_per_face> weights;
+      Tensor<1, dim>                                           normal;
     };
-    std::vector<Pair> pairs;
-    const auto        all = Utilities::MPI::all_gather(this->communicator, mine);
-    for (unsigned int rank = 0; rank < all.size(); ++rank)
-      for (unsigned int at = 0; at + pair_width <= all[rank].size(); at += pair_width)
-        {
-          const double *data = &all[rank][at];
-          Pair          pair;
-          for (unsigned int d = 0; d < dim; ++d)
-            pair.x[d] = data[d];
-          pair.inverse_mass = 1. / data[dim];
-          pair.rank         = rank;
-          pair.particle     = static_cast<unsigned int>(data[dim + 1]);
-          pair.face         = static_cast<unsigned int>(data[dim + 2]);
-          pair.weights.assign(data + dim + 3, data + dim + 3 + n_face_vertices);
-          for (unsigned int d = 0; d < dim; ++d)
-            pair.normal[d] = data[dim + 3 + n_face_vertices + d];
-          pairs.push_back(pair);
-        }
+    std::vector<Pair>         pairs;
+    const std::vector<double> all = gather_values(mine, this->communicator);
+    for (unsigned int at = 0; at + pair_width <= all.size(); at += pair_width)
+      {
+        const double *data = &all[at];
+        Pair          pair;
+        for (unsigned int d = 0; d < dim; ++d)
+          pair.x[d] = data[d];
+        pair.inverse_mass = 1. / data[dim];
+        pair.rank         = static_cast<unsigned int>(data[dim + 1]);
+        pair.particle     = static_cast<unsigned int>(data[dim + 2]);
+        pair.face         = static_cast<unsigned int>(data[dim + 3]);
+        std::copy(data + dim + 4, data + dim + 4 + n_face_vertices, pair.weights.begin());
+        for (unsigned int d = 0; d < dim; ++d)
+          pair.normal[d] = data[dim + 4 + n_face_vertices + d];
+        pairs.push_back(pair);
+      }
     std::sort(pairs.begin(), pairs.end(), [](const Pair &a, const Pair &b) {
       return internal::position_before(a.x, b.x);
     });
@@ -451,7 +481,6 @@ namespace PeriArlequin
 
     // This rank's particles, and its FE nodes: a free component moves, a prescribed one's
     // support takes the force (its reaction, M a + F_int - F_interface, less the contact force).
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(this->communicator);
     push.assign(next_position.size(), Tensor<1, dim>());
     this->local_force    = Tensor<1, dim>();
     this->local_touching = 0;

@@ -1,6 +1,7 @@
 #ifndef periarlequin_fe_contact_checks_h
 #define periarlequin_fe_contact_checks_h
 
+#include <periarlequin/base/gather.h>
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/fe_zone.h>
 
@@ -14,6 +15,30 @@ namespace PeriArlequin
 {
   namespace internal
   {
+    /**
+     * The values of every rank's owned nodes, @p width a node (@p mine: this rank's, in the
+     * order of its list in @p nodes_of_rank), gathered on all ranks into the order of the
+     * @p n_nodes nodes (collective; plain MPI, as the contact models do it every step).
+     */
+    inline std::vector<double>
+    gather_node_values(const std::vector<double>                    &mine,
+                       const std::vector<std::vector<unsigned int>> &nodes_of_rank,
+                       const unsigned int                            n_nodes,
+                       const unsigned int                            width,
+                       const MPI_Comm                                communicator)
+    {
+      const std::vector<double> all = gather_values(mine, communicator);
+      std::vector<double>       values(n_nodes * width, 0.);
+      auto                      from = all.begin();
+      for (const auto &owned : nodes_of_rank)
+        for (const unsigned int k : owned)
+          {
+            std::copy(from, from + width, values.begin() + k * width);
+            from += width;
+          }
+      return values;
+    }
+
     /** A set of ids as a parameter list. */
     inline std::string
     prm_list(const std::set<unsigned int> &ids)
@@ -72,12 +97,15 @@ namespace PeriArlequin
 
     /** The shape values of a Q1 face (2 or 4 vertices, deal.II's order) at @p xi. */
     template <int dim>
-    inline std::vector<double>
+    inline std::array<double, GeometryInfo<dim>::vertices_per_face>
     face_shape_values(const std::array<double, 2> &xi)
     {
-      if (dim == 2)
-        return {1 - xi[0], xi[0]};
-      return {(1 - xi[0]) * (1 - xi[1]), xi[0] * (1 - xi[1]), (1 - xi[0]) * xi[1], xi[0] * xi[1]};
+      std::array<double, GeometryInfo<dim>::vertices_per_face> N;
+      if constexpr (dim == 2)
+        N = {{1 - xi[0], xi[0]}};
+      else
+        N = {{(1 - xi[0]) * (1 - xi[1]), xi[0] * (1 - xi[1]), (1 - xi[0]) * xi[1], xi[0] * xi[1]}};
+      return N;
     }
 
     /**
@@ -85,11 +113,9 @@ namespace PeriArlequin
      * found by Gauss-Newton (exact in one step on a parallelogram), and the face's unit
      * normal there, oriented along @p outward.
      */
-    template <int dim>
+    template <int dim, typename Vertices>
     std::pair<std::array<double, 2>, Tensor<1, dim>>
-    project_onto_face(const std::vector<Point<dim>> &x,
-                      const Point<dim>              &p,
-                      const Tensor<1, dim>          &outward)
+    project_onto_face(const Vertices &x, const Point<dim> &p, const Tensor<1, dim> &outward)
     {
       std::array<double, 2>         xi = {{0.5, 0.5}};
       std::array<Tensor<1, dim>, 2> tangent;
@@ -99,7 +125,7 @@ namespace PeriArlequin
           const auto N = face_shape_values<dim>(xi);
           for (unsigned int j = 0; j < x.size(); ++j)
             position += N[j] * Tensor<1, dim>(x[j]);
-          if (dim == 2)
+          if constexpr (dim == 2)
             tangent[0] = x[1] - x[0];
           else
             {
@@ -108,7 +134,7 @@ namespace PeriArlequin
             }
           const Tensor<1, dim>  r    = p - position;
           std::array<double, 2> step = {{0, 0}};
-          if (dim == 2)
+          if constexpr (dim == 2)
             step[0] = (r * tangent[0]) / (tangent[0] * tangent[0]);
           else
             {

@@ -77,7 +77,7 @@ namespace PeriArlequin
                    const std::vector<Point<dim>> &next_position,
                    const std::vector<double>     &mass,
                    std::vector<Tensor<1, dim>>   &push) override;
-    /** The faces' box at the last step, widened by a face and the particles' radius. */
+    /** The faces' box at the last step, widened by two radii and the nodes' travel. */
     BoundingBox<dim>
     reach(const double time_step, const double radius) const override;
 
@@ -95,10 +95,10 @@ namespace PeriArlequin
      */
     struct FaceFoot
     {
-      unsigned int        face = numbers::invalid_unsigned_int;
-      std::vector<double> weights;
-      Tensor<1, dim>      normal;
-      double              distance = 0;
+      unsigned int                                             face = numbers::invalid_unsigned_int;
+      std::array<double, GeometryInfo<dim>::vertices_per_face> weights;
+      Tensor<1, dim>                                           normal;
+      double                                                   distance = 0;
     };
 
     /**
@@ -111,9 +111,12 @@ namespace PeriArlequin
                  const std::vector<Point<dim>> &x_nodes,
                  const double                   within) const;
 
-    /** Bin the faces at the node positions @p x_nodes, each where it lies within @p reach. */
+    /**
+     * Bin the faces at the node positions @p x_nodes, each where it lies within @p within and
+     * a skin, unless the bins of an earlier call still hold them.
+     */
     void
-    bin_faces(const std::vector<Point<dim>> &x_nodes, const double reach);
+    bin_faces(const std::vector<Point<dim>> &x_nodes, const double within);
 
     /** The bin of @p x. */
     std::array<long long, dim>
@@ -145,10 +148,15 @@ namespace PeriArlequin
     double smallest_face = 0, largest_face = 0;
     /** The nodes' positions X + u at set-up or the last step (the broad phase's box). */
     std::vector<Point<dim>> node_position;
+    /** The largest distance of a node's next position from its position at the last step [m]. */
+    double node_travel = 0;
 
     /** The faces in bins of edge bin_size (those within reach of the bin's points). */
     double                                                          bin_size = 0;
     std::map<std::array<long long, dim>, std::vector<unsigned int>> bins;
+    /** The node positions and the reach the bins were made for. */
+    std::vector<Point<dim>> binned_position;
+    double                  binned_within = 0;
 
     /** The FE zone's vectors of the step, noted by enforce(). */
     const typename Contact<dim>::VectorType *fe_mass         = nullptr;
