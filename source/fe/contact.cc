@@ -1,3 +1,4 @@
+#include <periarlequin/base/gather.h>
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/contact.h>
 #include <periarlequin/fe/contact_checks.h>
@@ -236,6 +237,58 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  GatheredBoundaryNodes<dim>::set_nodes(std::vector<BoundaryVertex<dim>> vertices,
+                                        const FEZone<dim>               &zone)
+  {
+    node_communicator = zone.get_dof_handler().get_communicator();
+    nodes             = std::move(vertices);
+    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
+      return internal::position_before(a.position, b.position);
+    });
+    node_of.clear();
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      node_of[nodes[k].dofs[0]] = k;
+    const IndexSet &owned = zone.get_dof_handler().locally_owned_dofs();
+    owned_nodes.clear();
+    owned_dofs.clear();
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      if (owned.is_element(nodes[k].dofs[0]))
+        {
+          owned_nodes.push_back(k);
+          std::array<unsigned int, dim> local;
+          for (unsigned int d = 0; d < dim; ++d)
+            local[d] = owned.index_within_set(nodes[k].dofs[d]);
+          owned_dofs.push_back(local);
+        }
+    nodes_of_rank = Utilities::MPI::all_gather(node_communicator, owned_nodes);
+  }
+
+  template <int dim>
+  unsigned int
+  GatheredBoundaryNodes<dim>::node_index(const types::global_dof_index first_dof) const
+  {
+    return node_of.at(first_dof);
+  }
+
+  template <int dim>
+  std::vector<double>
+  GatheredBoundaryNodes<dim>::gather_node_values(const std::vector<double> &mine,
+                                                 const unsigned int         width) const
+  {
+    const std::vector<double> all = gather_values(mine, node_communicator);
+    std::vector<double>       values(nodes.size() * width, 0.);
+    auto                      from = all.begin();
+    for (const auto &owned : nodes_of_rank)
+      for (const unsigned int k : owned)
+        {
+          std::copy(from, from + width, values.begin() + k * width);
+          from += width;
+        }
+    return values;
+  }
+
+  template <int dim>
+  void
   RigidWallContact<dim>::initialize(const FEZone<dim> &zone)
   {
     this->communicator = zone.get_dof_handler().get_communicator();
@@ -321,6 +374,8 @@ namespace PeriArlequin
 
   template class Contact<2>;
   template class Contact<3>;
+  template class GatheredBoundaryNodes<2>;
+  template class GatheredBoundaryNodes<3>;
   template class RigidWallContact<2>;
   template class RigidWallContact<3>;
   template std::map<types::global_dof_index, BoundaryVertex<2>>

@@ -123,16 +123,11 @@ namespace PeriArlequin
                            "selects no FE boundary face; allowed: ids of boundaries that "
                            "carry FE cells."));
 
-    nodes.clear();
+    std::vector<BoundaryVertex<dim>> involved;
     for (const auto *set : {&striker, &target})
       for (const auto &entry : *set)
-        nodes.push_back(entry.second);
-    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
-      return internal::position_before(a.position, b.position);
-    });
-    std::map<types::global_dof_index, unsigned int> node_of;
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      node_of[nodes[k].dofs[0]] = k;
+        involved.push_back(entry.second);
+    this->set_nodes(std::move(involved), zone);
 
     // Pair each striker vertex with the face it projects onto, the nearest if several.
     face_size = std::numeric_limits<double>::max();
@@ -166,7 +161,7 @@ namespace PeriArlequin
                 pair.normal  = normal;
                 pair.face_nodes.clear();
                 for (const auto first : face.first_dofs)
-                  pair.face_nodes.push_back(node_of[first]);
+                  pair.face_nodes.push_back(this->node_index(first));
                 pair.weights.assign(N.begin(), N.end());
               }
           }
@@ -180,19 +175,6 @@ namespace PeriArlequin
                            "onto, in the reference configuration); allowed: boundaries that "
                            "face each other."));
 
-    // Which nodes this rank owns, and every rank's list, in the order of the gathered values.
-    owned_nodes.clear();
-    owned_dofs.clear();
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      if (owned.is_element(nodes[k].dofs[0]))
-        {
-          owned_nodes.push_back(k);
-          std::array<unsigned int, dim> local;
-          for (unsigned int d = 0; d < dim; ++d)
-            local[d] = owned.index_within_set(nodes[k].dofs[d]);
-          owned_dofs.push_back(local);
-        }
-    nodes_of_rank = Utilities::MPI::all_gather(this->communicator, owned_nodes);
     striker_owned_here.assign(nodes.size(), false);
     for (const unsigned int k : owned_nodes)
       striker_owned_here[k] = striker.count(nodes[k].dofs[0]) > 0;
@@ -235,8 +217,7 @@ namespace PeriArlequin
             mine.push_back(vector->local_element(local[d]));
         mine.push_back(mass.local_element(local[0]));
       }
-    state =
-      internal::gather_node_values(mine, nodes_of_rank, nodes.size(), width, this->communicator);
+    state = this->gather_node_values(mine, width);
   }
 
   template <int dim>

@@ -1,3 +1,4 @@
+#include <periarlequin/base/gather.h>
 #include <periarlequin/fe/contact_checks.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/fe/particle_face_contact.h>
@@ -61,15 +62,10 @@ namespace PeriArlequin
     for (const auto &face : boundary)
       for (const auto &vertex : face.vertices)
         vertices[vertex.dofs[0]] = vertex;
-    nodes.clear();
+    std::vector<BoundaryVertex<dim>> unique;
     for (const auto &entry : vertices)
-      nodes.push_back(entry.second);
-    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
-      return internal::position_before(a.position, b.position);
-    });
-    std::map<types::global_dof_index, unsigned int> node_of;
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      node_of[nodes[k].dofs[0]] = k;
+      unique.push_back(entry.second);
+    this->set_nodes(std::move(unique), zone);
     faces.clear();
     smallest_face = std::numeric_limits<double>::max();
     largest_face  = 0;
@@ -78,7 +74,7 @@ namespace PeriArlequin
         Face face;
         for (unsigned int v = 0; v < face.nodes.size(); ++v)
           {
-            face.nodes[v]         = node_of[boundary_face.vertices[v].dofs[0]];
+            face.nodes[v]         = this->node_index(boundary_face.vertices[v].dofs[0]);
             const Point<dim> &x_v = boundary_face.vertices[v].position;
             if (v > 0)
               smallest_face =
@@ -91,29 +87,18 @@ namespace PeriArlequin
         faces.push_back(face);
       }
 
-    // Which nodes this rank owns, and every rank's list, in the order of the gathered values.
-    const IndexSet        &owned = zone.get_dof_handler().locally_owned_dofs();
+    // Which components of the owned nodes are prescribed.
     std::set<unsigned int> prescribed;
     for (const auto &dof : zone.get_prescribed_dofs())
       prescribed.insert(dof.local_index);
-    owned_nodes.clear();
-    owned_dofs.clear();
     owned_prescribed.clear();
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      if (owned.is_element(nodes[k].dofs[0]))
-        {
-          owned_nodes.push_back(k);
-          std::array<unsigned int, dim> local;
-          std::array<bool, dim>         fixed;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              local[d] = owned.index_within_set(nodes[k].dofs[d]);
-              fixed[d] = prescribed.count(local[d]) > 0;
-            }
-          owned_dofs.push_back(local);
-          owned_prescribed.push_back(fixed);
-        }
-    nodes_of_rank = Utilities::MPI::all_gather(this->communicator, owned_nodes);
+    for (const auto &local : owned_dofs)
+      {
+        std::array<bool, dim> fixed;
+        for (unsigned int d = 0; d < dim; ++d)
+          fixed[d] = prescribed.count(local[d]) > 0;
+        owned_prescribed.push_back(fixed);
+      }
 
     const auto &s    = zone.get_state();
     const auto state = gather_state(zone.lumped_mass(), s.displacement, s.velocity, s.acceleration);
@@ -144,11 +129,7 @@ namespace PeriArlequin
         for (unsigned int d = 0; d < dim; ++d)
           mine.push_back(owned_prescribed[k][d] ? 0. : 1. / mass.local_element(owned_dofs[k][d]));
       }
-    return internal::gather_node_values(mine,
-                                        nodes_of_rank,
-                                        nodes.size(),
-                                        width,
-                                        this->communicator);
+    return this->gather_node_values(mine, width);
   }
 
   template <int dim>

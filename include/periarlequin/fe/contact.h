@@ -202,6 +202,45 @@ namespace PeriArlequin
                      const std::string            &parameter);
 
   /**
+   * Boundary vertices whose values a contact model gathers on every rank each step (the
+   * models that solve their pairs on every rank alike): sorted by position, the same list
+   * on every rank whatever the partition, with the local DoFs of those this rank owns and
+   * every rank's owned list, in the order of the gathered values.
+   */
+  template <int dim>
+  class GatheredBoundaryNodes
+  {
+  protected:
+    /**
+     * Take @p vertices (each once) as the nodes, sorted, and find which this rank owns in
+     * @p zone (collective).
+     */
+    void
+    set_nodes(std::vector<BoundaryVertex<dim>> vertices, const FEZone<dim> &zone);
+
+    /** The index of the node whose first DoF is @p first_dof. */
+    unsigned int
+    node_index(const types::global_dof_index first_dof) const;
+
+    /**
+     * The values of the owned nodes, @p width a node in the order of owned_nodes (@p mine),
+     * gathered on all ranks into node order (collective; plain MPI).
+     */
+    std::vector<double>
+    gather_node_values(const std::vector<double> &mine, const unsigned int width) const;
+
+    std::vector<BoundaryVertex<dim>> nodes;
+    /** The nodes whose DoFs this rank owns, with their local indices; every rank's list. */
+    std::vector<unsigned int>                  owned_nodes;
+    std::vector<std::array<unsigned int, dim>> owned_dofs;
+    std::vector<std::vector<unsigned int>>     nodes_of_rank;
+
+  private:
+    std::map<types::global_dof_index, unsigned int> node_of;
+    MPI_Comm                                        node_communicator = MPI_COMM_SELF;
+  };
+
+  /**
    * Frictionless unilateral contact with a fixed rigid plane, enforced kinematically as
    * explicit codes do (a forward-increment Lagrange multiplier): with lumped masses each node
    * is its own constraint, and the contact force of step n+1 is the smallest push along the
@@ -272,7 +311,9 @@ namespace PeriArlequin
    * position), so the contact forces do not depend on the partition.
    */
   template <int dim>
-  class ElasticTargetContact : public Contact<dim>
+  class ElasticTargetContact
+    : public Contact<dim>
+    , private GatheredBoundaryNodes<dim>
   {
   public:
     /** The entries of subsection "Contact/<name>", declared and parsed. */
@@ -327,14 +368,11 @@ namespace PeriArlequin
     /** The entries as given, and as sets. */
     std::vector<unsigned int> striker_id_list, target_id_list;
     std::set<unsigned int>    striker_ids, target_ids;
-    /** The involved vertices (striker and target), sorted by position; the same on all ranks. */
-    std::vector<BoundaryVertex<dim>> nodes;
-    std::vector<Pair>                pairs;
-    /** The nodes whose DoFs this rank owns, with their local indices. */
-    std::vector<unsigned int>                  owned_nodes;
-    std::vector<std::array<unsigned int, dim>> owned_dofs;
-    /** The owned nodes of every rank, in the order of the gathered values. */
-    std::vector<std::vector<unsigned int>> nodes_of_rank;
+    /** The involved vertices: striker and target. */
+    using GatheredBoundaryNodes<dim>::nodes;
+    using GatheredBoundaryNodes<dim>::owned_nodes;
+    using GatheredBoundaryNodes<dim>::owned_dofs;
+    std::vector<Pair> pairs;
     /** Striker nodes this rank owns (a pair's force counts where its striker node lives). */
     std::vector<bool> striker_owned_here;
     /** The smallest target face diameter [m]: the scale of the gap tolerances. */

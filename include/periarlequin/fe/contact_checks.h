@@ -1,7 +1,6 @@
 #ifndef periarlequin_fe_contact_checks_h
 #define periarlequin_fe_contact_checks_h
 
-#include <periarlequin/base/gather.h>
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/fe/fe_zone.h>
 
@@ -15,30 +14,6 @@ namespace PeriArlequin
 {
   namespace internal
   {
-    /**
-     * The values of every rank's owned nodes, @p width a node (@p mine: this rank's, in the
-     * order of its list in @p nodes_of_rank), gathered on all ranks into the order of the
-     * @p n_nodes nodes (collective; plain MPI, as the contact models do it every step).
-     */
-    inline std::vector<double>
-    gather_node_values(const std::vector<double>                    &mine,
-                       const std::vector<std::vector<unsigned int>> &nodes_of_rank,
-                       const unsigned int                            n_nodes,
-                       const unsigned int                            width,
-                       const MPI_Comm                                communicator)
-    {
-      const std::vector<double> all = gather_values(mine, communicator);
-      std::vector<double>       values(n_nodes * width, 0.);
-      auto                      from = all.begin();
-      for (const auto &owned : nodes_of_rank)
-        for (const unsigned int k : owned)
-          {
-            std::copy(from, from + width, values.begin() + k * width);
-            from += width;
-          }
-      return values;
-    }
-
     /** A set of ids as a parameter list. */
     inline std::string
     prm_list(const std::set<unsigned int> &ids)

@@ -35,7 +35,9 @@ namespace PeriArlequin
    * partition.
    */
   template <int dim>
-  class ParticleFaceContact : public Contact<dim>
+  class ParticleFaceContact
+    : public Contact<dim>
+    , private GatheredBoundaryNodes<dim>
   {
   public:
     /** The entries of subsection "Contact/PD against FE", declared and parsed. */
@@ -135,13 +137,11 @@ namespace PeriArlequin
     std::vector<unsigned int> boundary_id_list;
     std::set<unsigned int>    boundary_ids;
 
-    /** The faces' vertices, sorted by position (the same on all ranks), and the faces. */
-    std::vector<BoundaryVertex<dim>> nodes;
-    std::vector<Face>                faces;
-    /** The nodes whose DoFs this rank owns, with their local indices; every rank's list. */
-    std::vector<unsigned int>                  owned_nodes;
-    std::vector<std::array<unsigned int, dim>> owned_dofs;
-    std::vector<std::vector<unsigned int>>     nodes_of_rank;
+    /** The faces' vertices, and the faces. */
+    using GatheredBoundaryNodes<dim>::nodes;
+    using GatheredBoundaryNodes<dim>::owned_nodes;
+    using GatheredBoundaryNodes<dim>::owned_dofs;
+    std::vector<Face> faces;
     /** Per owned node and component: prescribed? */
     std::vector<std::array<bool, dim>> owned_prescribed;
     /** The smallest and the largest face size (an edge; its diameter) [m]. */
