@@ -143,26 +143,20 @@ namespace PeriArlequin
         Pair   pair;
         for (const auto &face : target_faces)
           {
-            const auto [xi, normal] =
-              internal::project_onto_face(face.vertices, nodes[k].position, face.outward);
-            const double tolerance = 1e-10;
-            if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
-                (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
+            const auto foot =
+              internal::foot_on_face(face.vertices, nodes[k].position, face.outward);
+            if (!foot)
               continue;
-            const auto N = internal::face_shape_values<dim>(xi);
-            Point<dim> foot;
-            for (unsigned int j = 0; j < n_face_vertices; ++j)
-              foot += N[j] * Tensor<1, dim>(face.vertices[j]);
-            const double distance = (nodes[k].position - foot) * normal;
+            const double distance = foot->distance;
             if (std::abs(distance) < std::abs(best))
               {
                 best         = distance;
                 pair.striker = k;
-                pair.normal  = normal;
+                pair.normal  = foot->normal;
                 pair.face_nodes.clear();
                 for (const auto first : face.first_dofs)
                   pair.face_nodes.push_back(this->node_index(first));
-                pair.weights.assign(N.begin(), N.end());
+                pair.weights.assign(foot->weights.begin(), foot->weights.end());
               }
           }
         if (best != std::numeric_limits<double>::max())

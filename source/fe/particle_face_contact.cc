@@ -246,26 +246,17 @@ namespace PeriArlequin
           continue;
         for (unsigned int v = 0; v < vertices.size(); ++v)
           vertices[v] = x_nodes[faces[f].nodes[v]];
-        const auto [xi, normal] = internal::project_onto_face(vertices, x, faces[f].outward);
-        const double tolerance  = 1e-10;
-        if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
-            (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
-          continue;
-        const auto N = internal::face_shape_values<dim>(xi);
-        Point<dim> foot;
-        for (unsigned int v = 0; v < vertices.size(); ++v)
-          foot += N[v] * Tensor<1, dim>(vertices[v]);
+        const auto foot = internal::foot_on_face(vertices, x, faces[f].outward);
         // Behind the face by more than half a face: another side of the body is nearer.
-        const double distance = (x - foot) * normal;
-        if (distance > within || !(distance > -0.5 * smallest_face))
+        if (!foot || foot->distance > within || !(foot->distance > -0.5 * smallest_face))
           continue;
         if (nearest.face == numbers::invalid_unsigned_int ||
-            std::abs(distance) < std::abs(nearest.distance))
+            std::abs(foot->distance) < std::abs(nearest.distance))
           {
             nearest.face     = f;
-            nearest.weights  = N;
-            nearest.normal   = normal;
-            nearest.distance = distance;
+            nearest.weights  = foot->weights;
+            nearest.normal   = foot->normal;
+            nearest.distance = foot->distance;
           }
       }
     return nearest;

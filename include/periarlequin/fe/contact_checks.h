@@ -5,6 +5,8 @@
 #include <periarlequin/fe/fe_zone.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -133,6 +135,39 @@ namespace PeriArlequin
       if (normal * outward < 0)
         normal *= -1;
       return {xi, normal};
+    }
+
+    /** Where a point lies with respect to a Q1 face: the foot's shape values, the face's unit
+     * outward normal there and the point's distance along it [m]. */
+    template <int dim>
+    struct FaceFoot
+    {
+      std::array<double, GeometryInfo<dim>::vertices_per_face> weights;
+      Tensor<1, dim>                                           normal;
+      double                                                   distance = 0;
+    };
+
+    /**
+     * The foot of @p p on the face with vertices @p x (project_onto_face()), or nothing if it
+     * falls outside the face.
+     */
+    template <int dim, typename Vertices>
+    std::optional<FaceFoot<dim>>
+    foot_on_face(const Vertices &x, const Point<dim> &p, const Tensor<1, dim> &outward)
+    {
+      const auto [xi, normal] = project_onto_face(x, p, outward);
+      const double tolerance  = 1e-10;
+      if (xi[0] < -tolerance || xi[0] > 1 + tolerance ||
+          (dim == 3 && (xi[1] < -tolerance || xi[1] > 1 + tolerance)))
+        return std::nullopt;
+      FaceFoot<dim> foot;
+      foot.weights = face_shape_values<dim>(xi);
+      foot.normal  = normal;
+      Point<dim> at;
+      for (unsigned int j = 0; j < foot.weights.size(); ++j)
+        at += foot.weights[j] * Tensor<1, dim>(x[j]);
+      foot.distance = (p - at) * normal;
+      return foot;
     }
   } // namespace internal
 } // namespace PeriArlequin
