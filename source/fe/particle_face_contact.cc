@@ -218,13 +218,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  typename ParticleFaceContact<dim>::FaceFoot
+  typename ParticleFaceContact<dim>::NearestFace
   ParticleFaceContact<dim>::nearest_face(const Point<dim>              &x,
                                          const std::vector<Point<dim>> &x_nodes,
                                          const double                   within) const
   {
-    FaceFoot   nearest;
-    const auto bin = bins.find(bin_of(x));
+    NearestFace nearest;
+    const auto  bin = bins.find(bin_of(x));
     if (bin == bins.end())
       return nearest;
     std::array<Point<dim>, GeometryInfo<dim>::vertices_per_face> vertices;
@@ -253,10 +253,8 @@ namespace PeriArlequin
         if (nearest.face == numbers::invalid_unsigned_int ||
             std::abs(foot->distance) < std::abs(nearest.distance))
           {
-            nearest.face     = f;
-            nearest.weights  = foot->weights;
-            nearest.normal   = foot->normal;
-            nearest.distance = foot->distance;
+            static_cast<internal::FaceFoot<dim> &>(nearest) = *foot;
+            nearest.face                                    = f;
           }
       }
     return nearest;
@@ -277,7 +275,7 @@ namespace PeriArlequin
     Point<dim> where;
     for (const Point<dim> &x : positions)
       {
-        const FaceFoot foot = nearest_face(x, node_position, radius);
+        const NearestFace foot = nearest_face(x, node_position, radius);
         if (foot.face != numbers::invalid_unsigned_int && foot.distance - radius < deepest)
           {
             deepest = foot.distance - radius;
@@ -338,17 +336,18 @@ namespace PeriArlequin
       gather_state(*fe_mass, *fe_displacement, *fe_velocity, *fe_acceleration);
     std::vector<Point<dim>>     x_nodes(nodes.size());
     std::vector<Tensor<1, dim>> inverse_mass(nodes.size());
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double *s     = &state[k * width];
-          node_position[k][d] = nodes[k].position[d] + s[d];
-          x_nodes[k][d]       = node_position[k][d] + dt * s[dim + d] + dt * dt * s[2 * dim + d];
-          inverse_mass[k][d]  = s[3 * dim + d];
-        }
     node_travel = 0;
     for (unsigned int k = 0; k < nodes.size(); ++k)
-      node_travel = std::max(node_travel, x_nodes[k].distance(node_position[k]));
+      {
+        const double *s = &state[k * width];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            node_position[k][d] = nodes[k].position[d] + s[d];
+            x_nodes[k][d]       = node_position[k][d] + dt * s[dim + d] + dt * dt * s[2 * dim + d];
+            inverse_mass[k][d]  = s[3 * dim + d];
+          }
+        node_travel = std::max(node_travel, x_nodes[k].distance(node_position[k]));
+      }
 
     // This rank's particles in front of a face, within a radius of touching; then every
     // rank's, on all ranks.
@@ -359,7 +358,7 @@ namespace PeriArlequin
     std::vector<double> mine;
     for (unsigned int p = 0; p < next_position.size(); ++p)
       {
-        const FaceFoot foot = nearest_face(next_position[p], x_nodes, 2. * radius);
+        const NearestFace foot = nearest_face(next_position[p], x_nodes, 2. * radius);
         if (foot.face == numbers::invalid_unsigned_int)
           continue;
         for (unsigned int d = 0; d < dim; ++d)
@@ -401,11 +400,17 @@ namespace PeriArlequin
       return internal::position_before(a.x, b.x);
     });
 
-    // Gauss-Seidel over the pairs. The moves are kept apart from the positions (their
+    // Gauss-Seidel over the pairs. The moves, dt^2 lambda n / m_p for a particle and dt^2 f / m
+    // for a node under its contact force f, are kept apart from the positions (their
     // difference of positions would lose digits).
-    std::vector<Tensor<1, dim>> particle_shift(pairs.size()), node_shift(nodes.size()),
-      node_force(nodes.size());
-    std::vector<double> compliance(pairs.size()), lambda(pairs.size(), 0.);
+    std::vector<Tensor<1, dim>> node_force(nodes.size());
+    std::vector<double>         compliance(pairs.size()), lambda(pairs.size(), 0.);
+    const auto                  node_move = [&](const unsigned int k) {
+      Tensor<1, dim> move;
+      for (unsigned int d = 0; d < dim; ++d)
+        move[d] = dt * dt * node_force[k][d] * inverse_mass[k][d];
+      return move;
+    };
     for (unsigned int q = 0; q < pairs.size(); ++q)
       {
         compliance[q] = pairs[q].inverse_mass;
@@ -416,11 +421,12 @@ namespace PeriArlequin
       }
     const auto gap = [&](const unsigned int q) {
       const Pair    &pair = pairs[q];
-      Tensor<1, dim> g    = (pair.x - Point<dim>()) + particle_shift[q];
+      Tensor<1, dim> g =
+        (pair.x - Point<dim>()) + dt * dt * pair.inverse_mass * lambda[q] * pair.normal;
       for (unsigned int j = 0; j < n_face_vertices; ++j)
         {
           const unsigned int k = faces[pair.face].nodes[j];
-          g -= pair.weights[j] * ((x_nodes[k] - Point<dim>()) + node_shift[k]);
+          g -= pair.weights[j] * ((x_nodes[k] - Point<dim>()) + node_move(k));
         }
       return g * pair.normal - radius;
     };
@@ -433,18 +439,9 @@ namespace PeriArlequin
             if (change == 0)
               continue;
             lambda[q] += change;
-            const Tensor<1, dim> force = change * pairs[q].normal;
-            particle_shift[q] += dt * dt * pairs[q].inverse_mass * force;
             for (unsigned int j = 0; j < n_face_vertices; ++j)
-              {
-                const unsigned int k = faces[pairs[q].face].nodes[j];
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    node_force[k][d] -= pairs[q].weights[j] * force[d];
-                    node_shift[k][d] -=
-                      dt * dt * pairs[q].weights[j] * force[d] * inverse_mass[k][d];
-                  }
-              }
+              node_force[faces[pairs[q].face].nodes[j]] -=
+                pairs[q].weights[j] * change * pairs[q].normal;
             largest = std::max(largest, std::abs(change) * dt * dt * compliance[q]);
           }
         if (largest <= 1e-12 * smallest_face)
@@ -459,7 +456,7 @@ namespace PeriArlequin
     for (unsigned int q = 0; q < pairs.size(); ++q)
       if (pairs[q].rank == my_rank)
         {
-          push[pairs[q].particle] = particle_shift[q] / (dt * dt);
+          push[pairs[q].particle] = pairs[q].inverse_mass * lambda[q] * pairs[q].normal;
           if (lambda[q] > 0)
             {
               this->local_force += lambda[q] * pairs[q].normal;
@@ -473,7 +470,7 @@ namespace PeriArlequin
           if (owned_prescribed[n][d])
             fe_applied->local_element(i) -= node_force[k][d];
           else
-            fe_acceleration->local_element(i) += node_shift[k][d] / (dt * dt);
+            fe_acceleration->local_element(i) += node_force[k][d] * inverse_mass[k][d];
         }
     fe_acceleration = nullptr;
   }

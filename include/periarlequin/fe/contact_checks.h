@@ -61,7 +61,10 @@ namespace PeriArlequin
             return;
           }
     }
-    /** Positions in lexicographic order (x first), to sort nodes the same on every partition. */
+    /**
+     * Positions in lexicographic order (the last coordinate first), to sort nodes the same
+     * on every partition.
+     */
     template <int dim>
     bool
     position_before(const Point<dim> &a, const Point<dim> &b)

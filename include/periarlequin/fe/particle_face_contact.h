@@ -2,6 +2,7 @@
 #define periarlequin_fe_particle_face_contact_h
 
 #include <periarlequin/fe/contact.h>
+#include <periarlequin/fe/contact_checks.h>
 
 #include <array>
 #include <map>
@@ -91,16 +92,10 @@ namespace PeriArlequin
       Tensor<1, dim>                                                 outward;
     };
 
-    /**
-     * A particle in front of a face: the face, the foot's shape values and the face's unit
-     * outward normal there, and the particle's distance from the face along it [m].
-     */
-    struct FaceFoot
+    /** A particle in front of a face: the face, and the foot on it. */
+    struct NearestFace : internal::FaceFoot<dim>
     {
-      unsigned int                                             face = numbers::invalid_unsigned_int;
-      std::array<double, GeometryInfo<dim>::vertices_per_face> weights;
-      Tensor<1, dim>                                           normal;
-      double                                                   distance = 0;
+      unsigned int face = numbers::invalid_unsigned_int;
     };
 
     /**
@@ -108,7 +103,7 @@ namespace PeriArlequin
      * x_nodes: the nearest whose distance lies in (-half the smallest face, @p within];
      * face = invalid if none.
      */
-    FaceFoot
+    NearestFace
     nearest_face(const Point<dim>              &x,
                  const std::vector<Point<dim>> &x_nodes,
                  const double                   within) const;
