@@ -137,7 +137,11 @@ namespace PeriArlequin
     n_owned                  = owned;
     n_total                  = ghosts.n_total();
 
-    // The layout first: under the stencil a bond needs no neighbour index of its own.
+    // The layout first: under the stencil a bond needs no neighbour index of its own. The
+    // one replaced still knows the bond states of the families kept.
+    StencilLayout<dim> layout_before;
+    if (previous && was_stencil)
+      layout_before = std::move(layout);
     layout         = StencilLayout<dim>();
     stencil_active = false;
     if (kernel != Kernel::bond_list)
@@ -223,18 +227,30 @@ namespace PeriArlequin
     if (!stencil_active)
       neighbor_index.reserve(estimate);
     weighted_volume.assign(n_total, 0.);
-    for (unsigned int i = 0; i < owned; ++i)
+    bool any_kept = false;
+    for (unsigned int i = 0; i < owned;)
       {
         if (const unsigned int p = kept[i]; p != numbers::invalid_unsigned_int)
           {
+            // Kept families with consecutive old numbers are consecutive in the old arrays:
+            // copied at once.
+            unsigned int n = 1;
+            while (i + n < owned && kept[i + n] == p + n)
+              ++n;
+            const std::size_t first = state.size();
             stencil_index.insert(stencil_index.end(),
                                  index_before.begin() + begin_before[p],
-                                 index_before.begin() + begin_before[p + 1]);
+                                 index_before.begin() + begin_before[p + n]);
             state.insert(state.end(),
                          state_before.begin() + begin_before[p],
-                         state_before.begin() + begin_before[p + 1]);
-            weighted_volume[i]  = volume_before[p];
-            family_begin[i + 1] = state.size();
+                         state_before.begin() + begin_before[p + n]);
+            for (unsigned int m = 0; m < n; ++m)
+              {
+                weighted_volume[i + m]  = volume_before[p + m];
+                family_begin[i + m + 1] = first + (begin_before[p + m + 1] - begin_before[p]);
+              }
+            i += n;
+            any_kept = true;
             continue;
           }
         visit_family(i, [&](const unsigned int j, const unsigned int k) {
@@ -260,10 +276,13 @@ namespace PeriArlequin
             neighbor_index.push_back(j);
         });
         family_begin[i + 1] = state.size();
+        ++i;
       }
     ghosts.update_ghosts(make_array_view(weighted_volume), 1);
     mark_broken(broken_pairs, ghosts);
-    if (stencil_active)
+    if (stencil_active && any_kept)
+      layout.update_mask(*this, layout_before, kept);
+    else if (stencil_active)
       layout.update_mask(*this);
   }
 

@@ -80,9 +80,25 @@ namespace PeriArlequin
       }
 
     index_of_id.clear();
-    index_of_id.reserve(particle_ids.size());
-    for (unsigned int i = 0; i < particle_ids.size(); ++i)
-      index_of_id[particle_ids[i]] = i;
+    index_by_id.clear();
+    if (!particle_ids.empty())
+      {
+        const auto [lowest, highest] =
+          std::minmax_element(particle_ids.begin(), particle_ids.end());
+        first_id = *lowest;
+        if (*highest - *lowest < types::particle_index(max_table_span) * particle_ids.size())
+          {
+            index_by_id.assign(*highest - *lowest + 1, numbers::invalid_unsigned_int);
+            for (unsigned int i = 0; i < particle_ids.size(); ++i)
+              index_by_id[particle_ids[i] - first_id] = i;
+          }
+        else
+          {
+            index_of_id.reserve(particle_ids.size());
+            for (unsigned int i = 0; i < particle_ids.size(); ++i)
+              index_of_id[particle_ids[i]] = i;
+          }
+      }
     partitioners.clear();
   }
 
@@ -132,14 +148,6 @@ namespace PeriArlequin
   GhostExchange<dim>::reference_positions() const
   {
     return make_array_view(positions);
-  }
-
-  template <int dim>
-  unsigned int
-  GhostExchange<dim>::local_index(const types::particle_index id) const
-  {
-    const auto found = index_of_id.find(id);
-    return found == index_of_id.end() ? numbers::invalid_unsigned_int : found->second;
   }
 
   template <int dim>

@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/bond_families.h>
 #include <periarlequin/pd/stencil_layout.h>
 
@@ -92,10 +93,18 @@ namespace PeriArlequin
           }
       }
     // A rank that holds no particle has no box: no shifts and no bonds to look up.
+    lower_end_shift.assign(bonds.stencil.size(), 0);
+    lower_end_line_shift.assign(bonds.stencil.size(), 0);
     if (n_held > 0)
       for (unsigned int k = 0; k < bonds.stencil.size(); ++k)
         if (!entry_is_half[k])
-          half_of_entry[k] = half_of_shift.at(-entry_shift[k]);
+          {
+            half_of_entry[k]   = half_of_shift.at(-entry_shift[k]);
+            lower_end_shift[k] = entry_shift[k];
+            for (unsigned int d = 1; d < dim; ++d)
+              lower_end_line_shift[k] +=
+                bonds.stencil[k].offset[d] * static_cast<std::ptrdiff_t>(stride[d] / stride[1]);
+          }
 
     runs.clear();
     max_run_length        = 0;
@@ -135,18 +144,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  std::pair<unsigned int, std::size_t>
-  StencilLayout<dim>::mask_entry(const unsigned int i, const unsigned int k) const
-  {
-    const std::size_t  line_length = stride[1];
-    const std::size_t  s           = entry_is_half[k] ? slot[i] : slot[i] + entry_shift[k];
-    const unsigned int r           = run_of_line[s / line_length];
-    return {r,
-            runs[r].mask_begin + half_of_entry[k] * std::size_t(runs[r].length) +
-              (s - runs[r].begin)};
-  }
-
-  template <int dim>
   void
   StencilLayout<dim>::trim_block(const unsigned int r, const std::size_t h)
   {
@@ -174,15 +171,27 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  StencilLayout<dim>::trim_blocks()
+  {
+    for_each_subrange(
+      runs.size(),
+      [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int r = first; r < end; ++r)
+          for (std::size_t h = 0; h < half_offsets.size(); ++h)
+            trim_block(r, h);
+      },
+      64);
+  }
+
+  template <int dim>
+  void
   StencilLayout<dim>::restrict_force_pass(const std::vector<bool> &force_used,
                                           const std::vector<bool> &state_used)
   {
     force_use.assign(n_box_slots, 0);
     for (unsigned int i = 0; i < slot.size(); ++i)
       force_use[slot[i]] = (force_used[i] ? 1 : 0) | (state_used[i] ? 2 : 0);
-    for (unsigned int r = 0; r < runs.size(); ++r)
-      for (std::size_t h = 0; h < half_offsets.size(); ++h)
-        trim_block(r, h);
+    trim_blocks();
   }
 
   template <int dim>
@@ -190,12 +199,78 @@ namespace PeriArlequin
   StencilLayout<dim>::update_mask(const BondFamilies<dim> &bonds)
   {
     std::fill(mask.begin(), mask.end(), 0);
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        mask[mask_entry(i, bonds.stencil_index[n]).second] = bonds.state[n];
-    for (unsigned int r = 0; r < runs.size(); ++r)
-      for (std::size_t h = 0; h < half_offsets.size(); ++h)
-        trim_block(r, h);
+    // Every stored bond has a byte of its own: the particles can be done on any thread.
+    const std::size_t line_length = stride[1];
+    for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          const std::size_t line = slot[i] / line_length;
+          for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+            mask[mask_entry(i, line, bonds.stencil_index[n]).second] = bonds.state[n];
+        }
+    });
+    trim_blocks();
+    version = next_mask_version++;
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::update_mask(const BondFamilies<dim>         &bonds,
+                                  const StencilLayout<dim>        &before,
+                                  const std::vector<unsigned int> &kept)
+  {
+    AssertDimension(kept.size(), bonds.n_owned);
+    AssertDimension(before.half_offsets.size(), half_offsets.size());
+    std::fill(mask.begin(), mask.end(), 0);
+    // The box's extent in direction d (the lattice lines run along direction 0).
+    const auto extent = [](const StencilLayout<dim> &layout, const unsigned int d) {
+      return (d + 1 < dim ? layout.stride[d + 1] : layout.n_box_slots) / layout.stride[d];
+    };
+    // Each run on a line the old box held: the old states of its sites. A line's held
+    // sites only grew, so the old run lies within the new one.
+    if (before.n_held > 0)
+      for_each_subrange(
+        runs.size(),
+        [&](const unsigned int first, const unsigned int end) {
+          for (unsigned int r = first; r < end; ++r)
+            {
+              std::size_t line = runs[r].begin / stride[1], old_slot = 0;
+              bool        inside = true;
+              for (unsigned int d = 1; d < dim; ++d)
+                {
+                  const long site = static_cast<long>(line % extent(*this, d)) + lower[d];
+                  line /= extent(*this, d);
+                  const long old_coordinate = site - before.lower[d];
+                  inside                    = inside && old_coordinate >= 0 &&
+                           old_coordinate < static_cast<long>(extent(before, d));
+                  old_slot += old_coordinate * before.stride[d];
+                }
+              if (!inside || before.run_of_line[old_slot / before.stride[1]] < 0)
+                continue;
+              const Run &old    = before.runs[before.run_of_line[old_slot / before.stride[1]]];
+              const long offset = static_cast<long>(old.begin % before.stride[1]) +
+                                  before.lower[0] -
+                                  (static_cast<long>(runs[r].begin % stride[1]) + lower[0]);
+              Assert(offset >= 0 && offset + old.length <= runs[r].length,
+                     ExcMessage("A lattice line held fewer sites after the particles grew."));
+              for (std::size_t h = 0; h < half_offsets.size(); ++h)
+                std::copy_n(before.mask.begin() + old.mask_begin + h * old.length,
+                            old.length,
+                            mask.begin() + runs[r].mask_begin + h * runs[r].length + offset);
+            }
+        },
+        64);
+    // The families that changed.
+    for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        if (kept[i] == numbers::invalid_unsigned_int)
+          {
+            const std::size_t line = slot[i] / stride[1];
+            for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+              mask[mask_entry(i, line, bonds.stencil_index[n]).second] = bonds.state[n];
+          }
+    });
+    trim_blocks();
     version = next_mask_version++;
   }
 
@@ -210,7 +285,7 @@ namespace PeriArlequin
     for (const auto &bond : broken)
       {
         const unsigned int k       = bonds.stencil_index[bond.index];
-        const auto [run, position] = mask_entry(bond.particle, k);
+        const auto [run, position] = mask_entry(bond.particle, slot[bond.particle] / stride[1], k);
         mask[position]             = 0;
         blocks.emplace_back(run, half_of_entry[k]);
       }

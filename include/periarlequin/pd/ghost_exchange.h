@@ -52,7 +52,14 @@ namespace PeriArlequin
     reference_positions() const;
     /** Local number of the particle @p id, or numbers::invalid_unsigned_int if not held. */
     unsigned int
-    local_index(const types::particle_index id) const;
+    local_index(const types::particle_index id) const
+    {
+      if (!index_by_id.empty())
+        return id >= first_id && id - first_id < index_by_id.size() ? index_by_id[id - first_id] :
+                                                                      numbers::invalid_unsigned_int;
+      const auto found = index_of_id.find(id);
+      return found == index_of_id.end() ? numbers::invalid_unsigned_int : found->second;
+    }
 
     /**
      * Copy @p n_per_particle values per owned particle (entries [0, n_per_particle n_owned)
@@ -69,12 +76,22 @@ namespace PeriArlequin
     const Utilities::MPI::Partitioner &
     partitioner(const unsigned int n_per_particle);
 
-    Particles::ParticleHandler<dim>                        &particle_handler;
-    const MPI_Comm                                          communicator;
-    unsigned int                                            n_owned_particles = 0;
-    std::vector<types::particle_index>                      particle_ids;
-    std::vector<Point<dim>>                                 positions;
+    Particles::ParticleHandler<dim>   &particle_handler;
+    const MPI_Comm                     communicator;
+    unsigned int                       n_owned_particles = 0;
+    std::vector<types::particle_index> particle_ids;
+    std::vector<Point<dim>>            positions;
+    /**
+     * The local numbers by id. Lattice ids of a compact zone are nearly consecutive: where the
+     * held ids span at most max_table_span slots a held particle, a table over that span
+     * (index_by_id[id - first_id], invalid where not held; at most 32 bytes a particle, and
+     * built and read faster than a hash map, which every growth of an adaptive zone does for
+     * all particles); otherwise (a small zone in a large lattice) the hash map index_of_id.
+     */
+    types::particle_index                                   first_id = 0;
+    std::vector<unsigned int>                               index_by_id;
     std::unordered_map<types::particle_index, unsigned int> index_of_id;
+    static constexpr unsigned int                           max_table_span = 8;
     /** The consecutive number of the first owned particle, and those of the ghosts. */
     types::global_dof_index                                              first_index = 0;
     std::vector<types::global_dof_index>                                 ghost_indices;

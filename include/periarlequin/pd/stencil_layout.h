@@ -104,6 +104,18 @@ namespace PeriArlequin
     /** The bond states from the CSR states of @p bonds (after they were built or bonds broke). */
     void
     update_mask(const BondFamilies<dim> &bonds);
+    /**
+     * The same after the held particles grew, at the cost of the families that changed: the
+     * states of the lattice lines that @p before held are taken from it, then those of the
+     * owned particles whose family was not kept (@p kept: the old local number of each owned
+     * particle whose family, and relative order, are as before, else invalid) are written.
+     * Right because particles were only added: every bond @p before knew is still stored at
+     * the same end.
+     */
+    void
+    update_mask(const BondFamilies<dim>         &bonds,
+                const StencilLayout<dim>        &before,
+                const std::vector<unsigned int> &kept);
 
     /**
      * The bond states after the bonds @p broken of @p bonds broke (their states are broken
@@ -208,13 +220,25 @@ namespace PeriArlequin
     std::array<std::vector<std::pair<unsigned int, unsigned int>>, 2> slabs;
 
   private:
-    /** The run and the mask position of the bond at stencil entry @p k of held particle @p i. */
+    /**
+     * The run and the mask position of the bond at stencil entry @p k of held particle @p i,
+     * whose slot lies on lattice line @p line.
+     */
     std::pair<unsigned int, std::size_t>
-    mask_entry(const unsigned int i, const unsigned int k) const;
+    mask_entry(const unsigned int i, const std::size_t line, const unsigned int k) const
+    {
+      const unsigned int r = run_of_line[line + lower_end_line_shift[k]];
+      return {r,
+              runs[r].mask_begin + half_of_entry[k] * std::size_t(runs[r].length) +
+                (slot[i] + lower_end_shift[k] - runs[r].begin)};
+    }
 
     /** block_slots of run @p r and half offset @p h from the mask. */
     void
     trim_block(const unsigned int r, const std::size_t h);
+    /** trim_block() of every run and half offset, on the threads. */
+    void
+    trim_blocks();
 
     std::array<std::size_t, dim> stride;
     std::array<int, dim>         lower;
@@ -224,6 +248,13 @@ namespace PeriArlequin
     std::vector<bool> entry_is_half;
     /** Per stencil entry: its slot shift. */
     std::vector<std::ptrdiff_t> entry_shift;
+    /**
+     * Per stencil entry: the shift from a particle's slot to the lower slot of the bond (0 or
+     * entry_shift), and from its lattice line to that slot's line. The box's padding keeps
+     * every neighbour on the line its offset says, so the mask position of a bond needs no
+     * division per bond.
+     */
+    std::vector<std::ptrdiff_t> lower_end_shift, lower_end_line_shift;
     /** The local index of the particle in every slot of the box, or invalid_unsigned_int. */
     std::vector<unsigned int> local_of_slot;
     std::size_t               n_box_slots = 0;
