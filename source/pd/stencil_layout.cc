@@ -198,19 +198,10 @@ namespace PeriArlequin
   void
   StencilLayout<dim>::update_mask(const BondFamilies<dim> &bonds)
   {
-    std::fill(mask.begin(), mask.end(), 0);
-    // Every stored bond has a byte of its own: the particles can be done on any thread.
-    const std::size_t line_length = stride[1];
-    for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
-      for (unsigned int i = first; i < end; ++i)
-        {
-          const std::size_t line = slot[i] / line_length;
-          for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-            mask[mask_entry(i, line, bonds.stencil_index[n]).second] = bonds.state[n];
-        }
-    });
-    trim_blocks();
-    version = next_mask_version++;
+    // No old layout, no family kept: every family written.
+    update_mask(bonds,
+                StencilLayout<dim>(),
+                std::vector<unsigned int>(bonds.n_owned, numbers::invalid_unsigned_int));
   }
 
   template <int dim>
@@ -220,7 +211,8 @@ namespace PeriArlequin
                                   const std::vector<unsigned int> &kept)
   {
     AssertDimension(kept.size(), bonds.n_owned);
-    AssertDimension(before.half_offsets.size(), half_offsets.size());
+    Assert(before.n_held == 0 || before.half_offsets.size() == half_offsets.size(),
+           ExcMessage("The old layout has another stencil."));
     std::fill(mask.begin(), mask.end(), 0);
     // The box's extent in direction d (the lattice lines run along direction 0).
     const auto extent = [](const StencilLayout<dim> &layout, const unsigned int d) {
