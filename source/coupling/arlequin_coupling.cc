@@ -169,7 +169,14 @@ namespace PeriArlequin
   ArlequinCoupling<dim>::apply_damping()
   {
     if (damping)
-      damping->apply(fe_zone->get_state().velocity, *pd_zone);
+      damping->apply(fe_zone->get_state(), *pd_zone);
+  }
+
+  template <int dim>
+  double
+  ArlequinCoupling<dim>::stable_time_step(const double undamped_step) const
+  {
+    return damping ? damping->stable_time_step(undamped_step) : undamped_step;
   }
 
   template <int dim>

@@ -160,6 +160,19 @@ namespace PeriArlequin
                 << " s (2/sqrt(lambda_max(M^-1 K)) of this discretisation and material)";
         throw_invalid_parameter("Time/Time step", dt, allowed.str());
       }
+    const double damped_step =
+      coupling ? coupling->stable_time_step(stable_time_step) : stable_time_step;
+    if (dt > damped_step)
+      {
+        std::ostringstream allowed;
+        allowed << "a value <= " << damped_step << " s, the estimated stable step "
+                << stable_time_step
+                << " s lowered by the fine-scale damping taken at the half-step velocity "
+                   "(Coupling/Damping integration = half step): lower the time step or "
+                   "Coupling/Damping constant, widen the overlap, or set Coupling/Damping "
+                   "integration = implicit";
+        throw_invalid_parameter("Time/Time step", dt, allowed.str());
+      }
     if (contact)
       contact->check_time_step(dt);
   }

@@ -76,6 +76,8 @@ namespace PeriArlequin
     add_interface_forces(const double time) override;
     void
     apply_damping() override;
+    double
+    stable_time_step(const double undamped_step) const override;
     void
     enforce_constraint() override;
     void

@@ -50,6 +50,24 @@ namespace PeriArlequin
     inline const SelectionNames<MultiplierSolver> multiplier_solver_names =
       {{"diagonal", MultiplierSolver::diagonal}, {"cg", MultiplierSolver::cg}};
 
+    /** When the fine-scale damping force takes its velocity within a step (doc/method.md, 6). */
+    enum class DampingIntegration
+    {
+      /**
+       * At the velocity of the end of the step (solved per node): stable at any damping up
+       * to the undamped stable step.
+       */
+      implicit,
+      /**
+       * At the half-step velocity (the paper's eq. 79c): the damping lowers the stable step
+       * to 2 / omega (sqrt(1 + xi^2) - xi), xi = C_I / (2 omega).
+       */
+      half_step
+    };
+
+    inline const SelectionNames<DampingIntegration> damping_integration_names =
+      {{"implicit", DampingIntegration::implicit}, {"half step", DampingIntegration::half_step}};
+
     /** The Arlequin coupling: zones, blending, multipliers, fine-scale damping. */
     struct Coupling
     {
@@ -58,14 +76,15 @@ namespace PeriArlequin
       /** Overlap (0 < alpha < 1) and pure FE (alpha = 1) regions; pure PD is the PD region. */
       std::string overlap_text, fe_region_text;
       /** Width of the band around the PD region that is the overlap (0: the regions) [m]. */
-      double           overlap_width         = 0.;
-      Blending         blending              = Blending::energy;
-      MultiplierSolver multiplier_solver     = MultiplierSolver::diagonal;
-      bool             damping               = true;
-      double           damping_constant      = 10.;
-      double           damping_wave_speed    = 0.;
-      double           damping_overlap_width = 0.;
-      double           minimum_pd_weight     = 0.1;
+      double             overlap_width         = 0.;
+      Blending           blending              = Blending::energy;
+      MultiplierSolver   multiplier_solver     = MultiplierSolver::diagonal;
+      bool               damping               = true;
+      double             damping_constant      = 10.;
+      double             damping_wave_speed    = 0.;
+      double             damping_overlap_width = 0.;
+      DampingIntegration damping_integration   = DampingIntegration::implicit;
+      double             minimum_pd_weight     = 0.1;
       /** Steps between two checks of the FE strain against the critical stretch (0: none). */
       unsigned int strain_check_interval = 10;
 

@@ -68,6 +68,16 @@ namespace PeriArlequin
     virtual void
     apply_damping() = 0;
 
+    /**
+     * The stable step of the coupled zones given their undamped one @p undamped_step: lower
+     * where the coupling's damping is explicit.
+     */
+    virtual double
+    stable_time_step(const double undamped_step) const
+    {
+      return undamped_step;
+    }
+
     /** Eq. 62-69: make d/dt g vanish at the new time (after the trial velocities). */
     virtual void
     enforce_constraint() = 0;
