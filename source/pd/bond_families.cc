@@ -112,7 +112,7 @@ namespace PeriArlequin
                            const std::function<bool(const Point<dim> &)> &extent,
                            const std::vector<PreCrack<dim>>              &pre_cracks,
                            const std::vector<bool>                       &no_fail,
-                           const std::set<IdPair>                        &broken_pairs,
+                           const IdPairs                                 &broken_pairs,
                            const Kernel                                   kernel,
                            const PreviousNumbering                       *previous)
   {
@@ -163,7 +163,10 @@ namespace PeriArlequin
     const auto stored_at = [owned](const unsigned int i, const unsigned int j) {
       return j >= owned || j > i;
     };
-    const auto visit_family = [&](const unsigned int i, const auto &held) {
+    // Under the stencil a site missing from a family is checked against the extent once, not
+    // once for every family that misses it (1: checked, by its slot in the layout's box).
+    std::vector<std::uint8_t> missing_site_checked(stencil_active ? layout.n_slots() : 0, 0);
+    const auto                visit_family = [&](const unsigned int i, const auto &held) {
       const auto site = lattice.site(ids[i]);
       for (unsigned int k = 0; k < stencil.size(); ++k)
         {
@@ -174,6 +177,13 @@ namespace PeriArlequin
               held(j, k);
               continue;
             }
+          if (stencil_active)
+            {
+              std::uint8_t &checked = missing_site_checked[layout.neighbor_slot(i, k)];
+              if (checked)
+                continue;
+              checked = 1;
+            }
           const auto other = lattice.neighbour(site, stencil[k].offset);
           if (!other)
             continue;
@@ -182,13 +192,13 @@ namespace PeriArlequin
             {
               AssertThrow(!extent(lattice.position(*other)),
                           ExcMessage("Invalid input: a neighbour within the horizon of the "
-                                     "particle at " +
+                                                    "particle at " +
                                      point_text(x[i]) +
                                      " m is neither owned nor a ghost particle: one layer "
-                                     "of ghost cells does not cover the bonds there "
-                                     "(Peridynamics/Horizon factor and Lattice spacing); "
-                                     "allowed: background cells at least delta + dx/2 wide "
-                                     "wherever particles are, also around them."));
+                                                    "of ghost cells does not cover the bonds there "
+                                                    "(Peridynamics/Horizon factor and Lattice spacing); "
+                                                    "allowed: background cells at least delta + dx/2 wide "
+                                                    "wherever particles are, also around them."));
               continue;
             }
           held(j, k);
@@ -279,7 +289,7 @@ namespace PeriArlequin
         ++i;
       }
     ghosts.update_ghosts(make_array_view(weighted_volume), 1);
-    mark_broken(broken_pairs, ghosts);
+    mark_broken(broken_pairs, ghosts, any_kept ? &kept : nullptr);
     if (stencil_active && any_kept)
       layout.update_mask(*this, layout_before, kept);
     else if (stencil_active)
@@ -374,21 +384,22 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  std::set<typename BondFamilies<dim>::IdPair>
+  typename BondFamilies<dim>::IdPairs
   BondFamilies<dim>::broken_bonds(ArrayView<const types::particle_index> ids) const
   {
-    std::set<IdPair> broken_pairs;
+    IdPairs broken_pairs;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
         if (state[n] == broken)
-          broken_pairs.emplace(std::minmax(ids[i], ids[neighbor(i, n)]));
+          broken_pairs.emplace_back(std::minmax(ids[i], ids[neighbor(i, n)]));
     return broken_pairs;
   }
 
   template <int dim>
   void
-  BondFamilies<dim>::mark_broken(const std::set<IdPair>   &broken_pairs,
-                                 const GhostExchange<dim> &ghosts)
+  BondFamilies<dim>::mark_broken(const IdPairs                   &broken_pairs,
+                                 const GhostExchange<dim>        &ghosts,
+                                 const std::vector<unsigned int> *kept)
   {
     // Per broken pair, the families of its owned ends: a few lookups per pair instead of one
     // per stored bond.
@@ -397,7 +408,7 @@ namespace PeriArlequin
       for (const auto &[end, other] : {pair, std::make_pair(pair.second, pair.first)})
         {
           const unsigned int i = ghosts.local_index(end);
-          if (i >= n_owned)
+          if (i >= n_owned || (kept && (*kept)[i] != numbers::invalid_unsigned_int))
             continue;
           for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
             if (ids[neighbor(i, n)] == other)
@@ -407,8 +418,7 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  BondFamilies<dim>::break_bonds(const std::set<IdPair>   &broken_pairs,
-                                 const GhostExchange<dim> &ghosts)
+  BondFamilies<dim>::break_bonds(const IdPairs &broken_pairs, const GhostExchange<dim> &ghosts)
   {
     mark_broken(broken_pairs, ghosts);
     states_changed();

@@ -137,8 +137,8 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken,
-                                         const HeldBefore                                   *before)
+  PDZone<dim>::build_particle_structures(const typename BondFamilies<dim>::IdPairs &broken,
+                                         const HeldBefore                          *before)
   {
     ghosts.reinit();
     check_horizon_covered();

@@ -146,8 +146,8 @@ namespace PeriArlequin
     build_particle_structures();
     settling_force.assign(ghosts.n_owned(), Tensor<1, dim>());
     settling_start.assign(ghosts.n_owned(), -std::numeric_limits<double>::infinity());
-    const auto                                   ids = ghosts.ids();
-    std::set<typename BondFamilies<dim>::IdPair> broken;
+    const auto                          ids = ghosts.ids();
+    typename BondFamilies<dim>::IdPairs broken;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
         const auto found = received.find(ids[i]);
@@ -163,7 +163,7 @@ namespace PeriArlequin
         settling_start[i]           = found->second.settling_start;
         energy_density[i]           = found->second.energy_density;
         for (const types::particle_index partner : found->second.broken_partners)
-          broken.emplace(std::minmax(ids[i], partner));
+          broken.emplace_back(std::minmax(ids[i], partner));
       }
     bonds.break_bonds(broken, ghosts);
     latest_settling_start = -std::numeric_limits<double>::infinity();

@@ -11,7 +11,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -42,6 +41,8 @@ namespace PeriArlequin
   public:
     /** The particle ids of a bond's ends, the lower first. */
     using IdPair = std::pair<types::particle_index, types::particle_index>;
+    /** Bonds by the ids of their ends, in no particular order; a pair may repeat. */
+    using IdPairs = std::vector<IdPair>;
 
     /** One lattice offset within the horizon. */
     struct StencilEntry
@@ -111,7 +112,7 @@ namespace PeriArlequin
           const std::function<bool(const Point<dim> &)> &extent,
           const std::vector<PreCrack<dim>>              &pre_cracks,
           const std::vector<bool>                       &no_fail,
-          const std::set<IdPair>                        &broken_pairs,
+          const IdPairs                                 &broken_pairs,
           const Kernel                                   kernel   = Kernel::automatic,
           const PreviousNumbering                       *previous = nullptr);
 
@@ -154,14 +155,14 @@ namespace PeriArlequin
     break_stencil_bonds(const std::vector<SlotBond> &breaking);
 
     /** The broken bonds stored here, as ordered pairs of the particle ids @p ids of the ends. */
-    std::set<IdPair>
+    IdPairs
     broken_bonds(ArrayView<const types::particle_index> ids) const;
     /**
      * Break the stored bonds whose ends' ids (@p ghosts numbers them) are a pair in
      * @p broken_pairs.
      */
     void
-    break_bonds(const std::set<IdPair> &broken_pairs, const GhostExchange<dim> &ghosts);
+    break_bonds(const IdPairs &broken_pairs, const GhostExchange<dim> &ghosts);
 
     unsigned int n_owned = 0;
     /** Owned plus ghost particles. */
@@ -239,9 +240,15 @@ namespace PeriArlequin
     std::vector<unsigned int>
     families_to_keep(const PreviousNumbering &previous, const unsigned int n_owned_before) const;
 
-    /** Set the state of the bonds in @p broken_pairs to broken, without refreshing the layout. */
+    /**
+     * Set the state of the bonds in @p broken_pairs to broken, without refreshing the layout;
+     * with @p kept (per owned particle, valid if its family was kept as stored, breaks
+     * included) only in the families not kept.
+     */
     void
-    mark_broken(const std::set<IdPair> &broken_pairs, const GhostExchange<dim> &ghosts);
+    mark_broken(const IdPairs                   &broken_pairs,
+                const GhostExchange<dim>        &ghosts,
+                const std::vector<unsigned int> *kept = nullptr);
 
     StencilLayout<dim> layout;
     bool               stencil_active = false;

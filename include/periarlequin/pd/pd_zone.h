@@ -543,8 +543,8 @@ namespace PeriArlequin
      * the bond families that cannot have changed are kept.
      */
     void
-    build_particle_structures(const std::set<typename BondFamilies<dim>::IdPair> &broken = {},
-                              const HeldBefore                                   *before = nullptr);
+    build_particle_structures(const typename BondFamilies<dim>::IdPairs &broken = {},
+                              const HeldBefore                          *before = nullptr);
     /**
      * Per owned and ghost particle, whether its bonds cannot break: in the overlap and the slave
      * layer (the coupling assumes a continuum there) or in Peridynamics/No-fail region.

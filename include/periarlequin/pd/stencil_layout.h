@@ -132,7 +132,17 @@ namespace PeriArlequin
     unsigned int
     neighbor(const unsigned int i, const unsigned int k) const
     {
-      return local_of_slot[slot[i] + entry_shift[k]];
+      return local_of_slot[neighbor_slot(i, k)];
+    }
+
+    /**
+     * The slot of the lattice site at stencil entry @p k of held particle @p i, held or not
+     * (the box's padding holds every site within the stencil of a held particle).
+     */
+    std::size_t
+    neighbor_slot(const unsigned int i, const unsigned int k) const
+    {
+      return slot[i] + entry_shift[k];
     }
 
     /** The local indices of the ends of @p bond, the lower slot's first. */
