@@ -292,11 +292,10 @@ namespace PeriArlequin
                                             const PDZone<dim> &pd_zone,
                                             std::vector<bool> &convert) const
   {
-    const auto              damage = pd_zone.get_bonds().damage();
-    const auto              x      = pd_zone.reference_positions();
+    const auto              x = pd_zone.reference_positions();
     std::vector<Point<dim>> damaged;
-    for (unsigned int i = 0; i < damage.size(); ++i)
-      if (damage[i] > damage_threshold)
+    for (const auto &[i, damage] : pd_zone.get_bonds().damaged_particles())
+      if (damage > damage_threshold)
         damaged.push_back(x[i]);
     damaged = internal::gather_points(damaged, pd_zone.get_communicator());
     internal::mark_cells_near(fe_zone, damaged, distance, convert);

@@ -18,9 +18,15 @@ namespace PeriArlequin
     const auto &partitioner = *layout.get_partitioner();
     const auto  locations   = pd_zone.owned_particle_locations();
 
-    row_begin = {0};
+    row_begin.clear();
+    row_begin.reserve(particles.size() + 1);
+    row_begin.push_back(0);
     entries.clear();
+    entries.reserve(particles.size() * dof_handler.get_fe_collection().max_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices;
+    // The shape functions of a vector element are those of its base elements: each base
+    // function is evaluated once a particle, not once per component.
+    std::vector<std::vector<double>> base_values;
     for (const unsigned int i : particles)
       {
         const auto &[triangulation_cell, unit_point] = locations[i];
@@ -41,9 +47,18 @@ namespace PeriArlequin
           }
         dof_indices.resize(fe.n_dofs_per_cell());
         cell->get_dof_indices(dof_indices);
+        base_values.resize(fe.n_base_elements());
+        for (unsigned int b = 0; b < fe.n_base_elements(); ++b)
+          {
+            const auto &base = fe.base_element(b);
+            base_values[b].resize(base.n_dofs_per_cell());
+            for (unsigned int j = 0; j < base.n_dofs_per_cell(); ++j)
+              base_values[b][j] = base.shape_value(j, unit_point);
+          }
         for (unsigned int k = 0; k < dof_indices.size(); ++k)
           {
-            const double value = fe.shape_value(k, unit_point);
+            const auto [base_and_copy, base_dof] = fe.system_to_base_index(k);
+            const double value                   = base_values[base_and_copy.first][base_dof];
             if (value != 0)
               entries.push_back(
                 {static_cast<unsigned int>(partitioner.global_to_local(dof_indices[k])),

@@ -93,6 +93,66 @@ namespace PeriArlequin
     return all;
   }
 
+  template <int dim>
+  std::vector<std::pair<unsigned int, double>>
+  BondFamilies<dim>::damaged_particles() const
+  {
+    std::vector<std::pair<unsigned int, double>> damaged;
+    if (!stencil_active)
+      {
+        const std::vector<double> all = damage();
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (all[i] > 0)
+            damaged.emplace_back(i, all[i]);
+        return damaged;
+      }
+    std::vector<std::uint8_t> has_broken(n_owned, 0);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+        if (state[n] == broken)
+          {
+            has_broken[i] = 1;
+            if (const unsigned int j = neighbor(i, n); j < n_owned)
+              has_broken[j] = 1;
+          }
+    // damage() adds to a particle the bonds stored at the owned particles below it first, in
+    // their order, then its own family: the same order here gives the same bits. The stencil
+    // is symmetric and in lexicographic order, so the entry opposite k is size - 1 - k.
+    const unsigned int                                  n_entries = stencil.size();
+    std::vector<std::pair<unsigned int, std::uint16_t>> lower;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (has_broken[i])
+        {
+          lower.clear();
+          for (unsigned int k = 0; k < n_entries; ++k)
+            if (const unsigned int j = layout.neighbor(i, k); j < i)
+              lower.emplace_back(j, static_cast<std::uint16_t>(n_entries - 1 - k));
+          std::sort(lower.begin(), lower.end());
+          double all = 0, kept = 0;
+          for (const auto &[j, k] : lower)
+            {
+              const auto first = stencil_index.begin() + family_begin[j];
+              const auto found =
+                std::lower_bound(first, stencil_index.begin() + family_begin[j + 1], k);
+              const std::size_t n = found - stencil_index.begin();
+              Assert(n < family_begin[j + 1] && stencil_index[n] == k && neighbor(j, n) == i,
+                     ExcMessage("A bond to a particle below is not stored at that particle."));
+              const double v = stencil[k].volume;
+              all += v;
+              kept += state[n] != broken ? v : 0.;
+            }
+          for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+            {
+              const double v = stencil[stencil_index[n]].volume;
+              all += v;
+              kept += state[n] != broken ? v : 0.;
+            }
+          if (all > 0 && 1. - kept / all > 0)
+            damaged.emplace_back(i, 1. - kept / all);
+        }
+    return damaged;
+  }
+
   namespace
   {
     template <int dim>

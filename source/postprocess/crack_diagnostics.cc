@@ -144,17 +144,16 @@ namespace PeriArlequin
     // Gathered as (id, position, damage) rows of doubles: ids are lattice site numbers,
     // exact in a double.
     using Cracked = typename CrackTracker<dim>::CrackedParticle;
-    std::vector<double>       local;
-    const std::vector<double> damage = pd->get_bonds().damage();
-    const auto                ids    = pd->particle_ids();
-    const auto                x      = pd->reference_positions();
-    for (unsigned int i = 0; i < pd->n_owned_particles(); ++i)
-      if (damage[i] > 0 && !pd->is_slave(i))
+    std::vector<double> local;
+    const auto          ids = pd->particle_ids();
+    const auto          x   = pd->reference_positions();
+    for (const auto &[i, damage] : pd->get_bonds().damaged_particles())
+      if (!pd->is_slave(i))
         {
           local.push_back(ids[i]);
           for (unsigned int d = 0; d < dim; ++d)
             local.push_back(x[i][d]);
-          local.push_back(damage[i]);
+          local.push_back(damage);
         }
     damaged.clear();
     const std::vector<double> all = gather_values(local, communicator);

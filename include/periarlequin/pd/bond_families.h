@@ -230,6 +230,13 @@ namespace PeriArlequin
     /** Damage 1 - (intact bond volume)/(initial bond volume) of every owned particle. */
     std::vector<double>
     damage() const;
+    /**
+     * The owned particles of non-zero damage, ascending, with their damage (the values of
+     * damage(), to the bit): under the stencil at the cost of the bonds of the particles
+     * with a broken bond, not of every bond.
+     */
+    std::vector<std::pair<unsigned int, double>>
+    damaged_particles() const;
 
   private:
     /**
