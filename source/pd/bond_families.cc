@@ -226,7 +226,8 @@ namespace PeriArlequin
     // Under the stencil a site missing from a family is checked against the extent once, not
     // once for every family that misses it (1: checked, by its slot in the layout's box).
     std::vector<std::uint8_t> missing_site_checked(stencil_active ? layout.n_slots() : 0, 0);
-    const auto                visit_family = [&](const unsigned int i, const auto &held) {
+
+    const auto visit_family = [&](const unsigned int i, const auto &held) {
       const auto site = lattice.site(ids[i]);
       for (unsigned int k = 0; k < stencil.size(); ++k)
         {
@@ -252,13 +253,13 @@ namespace PeriArlequin
             {
               AssertThrow(!extent(lattice.position(*other)),
                           ExcMessage("Invalid input: a neighbour within the horizon of the "
-                                                    "particle at " +
+                                     "particle at " +
                                      point_text(x[i]) +
                                      " m is neither owned nor a ghost particle: one layer "
-                                                    "of ghost cells does not cover the bonds there "
-                                                    "(Peridynamics/Horizon factor and Lattice spacing); "
-                                                    "allowed: background cells at least delta + dx/2 wide "
-                                                    "wherever particles are, also around them."));
+                                     "of ghost cells does not cover the bonds there "
+                                     "(Peridynamics/Horizon factor and Lattice spacing); "
+                                     "allowed: background cells at least delta + dx/2 wide "
+                                     "wherever particles are, also around them."));
               continue;
             }
           held(j, k);
