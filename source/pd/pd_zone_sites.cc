@@ -16,12 +16,20 @@ namespace PeriArlequin
   {
     if (!general_cells)
       return {cell->vertex(0), cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1)};
-    // The bounding box, closed on top: owns_site() decides between the cells that share it.
-    const BoundingBox<dim> box   = cell->bounding_box();
-    Point<dim>             upper = box.get_boundary_points().second;
+    // The bounding box, widened on both sides beyond the reach of owns_site()'s tolerance:
+    // a site on a face (a lattice row on a mesh line) must be seen by every cell that may own
+    // it, whatever the round-off of its coordinates; owns_site() then picks one.
+    const BoundingBox<dim> box = cell->bounding_box();
+    double                 pad = 0;
     for (unsigned int d = 0; d < dim; ++d)
-      upper[d] += 1e-10 * parameters.lattice_spacing;
-    return {box.get_boundary_points().first, upper};
+      pad = std::max(pad, 1e-9 * box.side_length(d));
+    auto [lower, upper] = box.get_boundary_points();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] -= pad;
+        upper[d] += pad;
+      }
+    return {lower, upper};
   }
 
   template <int dim>
