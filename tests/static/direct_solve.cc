@@ -13,32 +13,18 @@
 #include <periarlequin/simulator.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <map>
-#include <sstream>
 
 #include "../tests.h"
+#include "cantilever_system.h"
 
 using namespace PeriArlequinTests;
 
 namespace
 {
-  constexpr double       E = 200e9, nu = 0.3, length = 0.1, height = 0.02, shear = 1e6;
   constexpr unsigned int cells_x = 40, cells_y = 8;
 
   /** Nodal displacements of the direct solve, by support point (rounded to 1 nm) and component. */
@@ -50,113 +36,38 @@ namespace
     return {std::lround(p[0] * 1e9), std::lround(p[1] * 1e9), component};
   }
 
-  /** Assemble and solve K u = f for the cantilever (step-8 style, plane stress). */
+  /** Solve K u = f of the cantilever, assembled apart from the library, with UMFPACK. */
   NodalValues
   direct_solution()
   {
-    Triangulation<2> triangulation;
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              {cells_x, cells_y},
-                                              Point<2>(0, 0),
-                                              Point<2>(length, height),
-                                              true);
-    const FESystem<2> fe(FE_Q<2>(1), 2);
-    DoFHandler<2>     dofs(triangulation);
-    dofs.distribute_dofs(fe);
-
-    AffineConstraints<double> constraints;
-    VectorTools::interpolate_boundary_values(dofs, 0, Functions::ZeroFunction<2>(2), constraints);
-    constraints.close();
-    DynamicSparsityPattern pattern(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
-    SparsityPattern sparsity;
-    sparsity.copy_from(pattern);
-    SparseMatrix<double> stiffness(sparsity);
-    Vector<double>       load(dofs.n_dofs()), u(dofs.n_dofs());
-
-    // Plane stress: sigma = lambda* tr(eps) I + 2 mu eps, lambda* = E nu / (1 - nu^2).
-    const double       lambda = E * nu / (1 - nu * nu), mu = E / (2 * (1 + nu));
-    const QGauss<2>    quadrature(2);
-    const QGauss<1>    face_quadrature(2);
-    FEValues<2>        values(fe, quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<2>    face_values(fe, face_quadrature, update_values | update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_load(n);
-    std::vector<types::global_dof_index> indices(n);
-    const FEValuesExtractors::Vector     displacement(0);
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        values.reinit(cell);
-        cell_matrix = 0;
-        cell_load   = 0;
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const auto eps_i = values[displacement].symmetric_gradient(i, q);
-              for (unsigned int j = 0; j < n; ++j)
-                {
-                  const auto eps_j = values[displacement].symmetric_gradient(j, q);
-                  cell_matrix(i, j) +=
-                    (lambda * trace(eps_i) * trace(eps_j) + 2 * mu * scalar_product(eps_i, eps_j)) *
-                    values.JxW(q);
-                }
-            }
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 1)
-            {
-              face_values.reinit(cell, f);
-              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                for (unsigned int i = 0; i < n; ++i)
-                  cell_load(i) -=
-                    shear * face_values[displacement].value(i, q)[1] * face_values.JxW(q);
-            }
-        cell->get_dof_indices(indices);
-        constraints.distribute_local_to_global(cell_matrix, cell_load, indices, stiffness, load);
-      }
+    CantileverSystem    system(cells_x, cells_y);
+    Vector<double>      u(system.dofs.n_dofs());
     SparseDirectUMFPACK solver;
-    solver.initialize(stiffness);
-    solver.vmult(u, load);
-    constraints.distribute(u);
+    solver.initialize(system.stiffness);
+    solver.vmult(u, system.load);
+    system.constraints.distribute(u);
 
-    std::vector<Point<2>> points(dofs.n_dofs());
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dofs, points);
-    NodalValues nodal;
-    for (const auto &cell : dofs.active_cell_iterators())
+    std::vector<Point<2>> points(system.dofs.n_dofs());
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), system.dofs, points);
+    NodalValues                          nodal;
+    const unsigned int                   n = system.fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> indices(n);
+    for (const auto &cell : system.dofs.active_cell_iterators())
       {
         cell->get_dof_indices(indices);
         for (unsigned int i = 0; i < n; ++i)
-          nodal[key(points[indices[i]], fe.system_to_component_index(i).first)] = u(indices[i]);
+          nodal[key(points[indices[i]], system.fe.system_to_component_index(i).first)] =
+            u(indices[i]);
       }
     return nodal;
-  }
-
-  std::string
-  cantilever_text()
-  {
-    std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = " << length
-         << ", " << height << "\n  set Subdivisions = " << cells_x << ", " << cells_y << "\nend\n"
-         << "subsection Material\n  set Young's modulus = " << E
-         << "\n  set Poisson's ratio = " << nu
-         << "\n  set Density = 7800\n  set Two-dimensional model = plane stress\nend\n"
-         << "subsection Boundary conditions\n"
-         << "  subsection Boundary 0\n    set Type = displacement\n    subsection Function\n"
-         << "      set Function expression = 0; 0\n    end\n  end\n"
-         << "  subsection Boundary 1\n    set Type = traction\n    subsection Function\n"
-         << "      set Function expression = 0; " << -shear << "\n    end\n  end\nend\n"
-         << "subsection Time\n  set Integration = static then explicit\n  set Time step = 1e-7\n"
-         << "  set End time = 1e-7\nend\n"
-         << "subsection Static solve\n  set Tolerance = 1e-10\nend\n"
-         << quiet_output();
-    return text.str();
   }
 
   void
   cantilever()
   {
-    auto plate = make_simulator<2>(cantilever_text());
+    auto plate =
+      make_simulator<2>(CantileverSystem::case_text(cells_x, cells_y, 1e-7) +
+                        "subsection Static solve\n  set Tolerance = 1e-10\nend\n" + quiet_output());
     plate->setup();
     const auto result = plate->solve_static();
     report("relaxation iterations", result.iterations);

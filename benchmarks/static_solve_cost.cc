@@ -1,0 +1,175 @@
+/**
+ * The static solve against the problem size (benchmarks/static_solve_cost.sh runs it).
+ *
+ *   periarlequin-static-solve-cost CELLS_X [LATTICE_SPACING]
+ *
+ * The cantilever of tests/static/direct_solve (a plane-stress plate 100 x 20 mm clamped at
+ * x = 0, an end shear; bending, the slow case for a relaxation) on CELLS_X x CELLS_X/5 Q1
+ * cells. Without LATTICE_SPACING, pure FE, three ways to the same K u = f: the library's
+ * dynamic relaxation (Static solve/Tolerance 1e-8), a sparse direct solve (UMFPACK) and
+ * conjugate gradients with SSOR (relative residual 1e-10), each with its wall time and the
+ * largest difference from the direct solution. With LATTICE_SPACING [m], the coupled model:
+ * PD on [40, 60] mm over the full height, strict force-blended coupling in a band of two
+ * cells, relaxed by the library (its iterations and wall time).
+ */
+#include <periarlequin/simulator.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "../tests/static/cantilever_system.h"
+
+namespace
+{
+  using namespace dealii;
+  using PeriArlequinTests::CantileverSystem;
+
+  const std::string quiet = "subsection Output\n  set Output interval = 0\n"
+                            "  set Energy interval = 0\n  set Progress interval = 0\n"
+                            "  set Print timing summary = false\nend\n"
+                            "subsection Static solve\n  set Tolerance = 1e-8\nend\n";
+
+  /** Relax the case @p text with the library: iterations, wall time and the simulator. */
+  std::unique_ptr<PeriArlequin::Simulator<2>>
+  relax(const std::string &text, unsigned int &iterations, double &wall)
+  {
+    ParameterHandler prm;
+    PeriArlequin::Simulator<2>::declare_parameters(prm);
+    prm.parse_input_from_string(text);
+    auto simulator = std::make_unique<PeriArlequin::Simulator<2>>(prm, MPI_COMM_WORLD);
+    simulator->setup();
+    Timer clock;
+    iterations = simulator->solve_static().iterations;
+    wall       = clock.wall_time();
+    return simulator;
+  }
+
+  void
+  pure_fe(const unsigned int cells_x)
+  {
+    const unsigned int cells_y = cells_x / 5;
+    unsigned int       iterations;
+    double             relaxation_wall;
+    // The case's step matters for nothing here: the relaxation steps at 0.9 of the stable one.
+    const auto simulator = relax(CantileverSystem::case_text(cells_x, cells_y, 1e-9) + quiet,
+                                 iterations,
+                                 relaxation_wall);
+
+    Timer            clock;
+    CantileverSystem system(cells_x, cells_y);
+    const double     assembly_wall = clock.wall_time();
+
+    clock.restart();
+    Vector<double>      direct(system.dofs.n_dofs());
+    SparseDirectUMFPACK umfpack;
+    umfpack.initialize(system.stiffness);
+    umfpack.vmult(direct, system.load);
+    const double direct_wall = clock.wall_time();
+
+    clock.restart();
+    Vector<double>           krylov(system.dofs.n_dofs());
+    SolverControl            control(100000, 1e-10 * system.load.l2_norm());
+    SolverCG<Vector<double>> cg(control);
+    PreconditionSSOR<>       ssor;
+    ssor.initialize(system.stiffness, 1.2);
+    cg.solve(system.stiffness, krylov, system.load, ssor);
+    const double krylov_wall = clock.wall_time();
+    system.constraints.distribute(direct);
+    system.constraints.distribute(krylov);
+
+    // The relaxation's displacement at the direct solve's support points.
+    std::vector<unsigned int> local_dofs, components;
+    std::vector<Point<2>>     points;
+    simulator->get_fe_zone().support_points(local_dofs, points, components);
+    const auto &u = simulator->get_fe_zone().get_state().displacement;
+    std::map<std::tuple<long, long, unsigned int>, double> relaxed;
+    for (unsigned int k = 0; k < local_dofs.size(); ++k)
+      relaxed[{std::lround(points[k][0] * 1e9), std::lround(points[k][1] * 1e9), components[k]}] =
+        u.local_element(local_dofs[k]);
+    std::vector<Point<2>> support(system.dofs.n_dofs());
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), system.dofs, support);
+    const unsigned int                   n = system.fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> indices(n);
+    double                               relaxation_error = 0;
+    for (const auto &cell : system.dofs.active_cell_iterators())
+      {
+        cell->get_dof_indices(indices);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Point<2> &p = support[indices[i]];
+            relaxation_error =
+              std::max(relaxation_error,
+                       std::abs(relaxed.at({std::lround(p[0] * 1e9),
+                                            std::lround(p[1] * 1e9),
+                                            system.fe.system_to_component_index(i).first}) -
+                                direct(indices[i])));
+          }
+      }
+    Vector<double> difference = krylov;
+    difference -= direct;
+    const double scale = direct.linfty_norm();
+    std::cout << std::setprecision(3) << "FE " << cells_x << " x " << cells_y << " cells, "
+              << system.dofs.n_dofs() << " DoFs: relaxation " << iterations << " iterations "
+              << relaxation_wall << " s (error " << relaxation_error / scale << "); assembly "
+              << assembly_wall << " s; UMFPACK " << direct_wall << " s; CG-SSOR "
+              << control.last_step() << " iterations " << krylov_wall << " s (error "
+              << difference.linfty_norm() / scale << ")" << std::endl;
+  }
+
+  void
+  coupled(const unsigned int cells_x, const double spacing)
+  {
+    const unsigned int cells_y   = cells_x / 5;
+    const double       cell_size = CantileverSystem::length / cells_x;
+    std::ostringstream pd;
+    pd << "subsection Peridynamics\n  set Region = 0.04, 0 : 0.06, " << CantileverSystem::height
+       << "\n  set Lattice spacing = " << spacing << "\n  set Horizon factor = 3\nend\n"
+       << "subsection Coupling\n  set Method = strict\n  set Blending = force\n"
+       << "  set Overlap width = " << 2 * cell_size << "\nend\n";
+    // The coupled relaxation steps with the case's step: 0.8 of the lattice's stable step.
+    const double time_step = 0.8 * 0.4 * spacing / std::sqrt(CantileverSystem::E / 7800);
+    unsigned int iterations;
+    double       wall;
+    const auto   simulator =
+      relax(CantileverSystem::case_text(cells_x, cells_y, time_step) + pd.str() + quiet,
+            iterations,
+            wall);
+    std::cout << std::setprecision(3) << "coupled " << cells_x << " x " << cells_y << " cells, dx "
+              << spacing << " m, " << simulator->get_pd_zone()->n_owned_particles()
+              << " particles: relaxation " << iterations << " iterations " << wall << " s"
+              << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (argc < 2)
+    {
+      std::cerr << "usage: " << argv[0] << " CELLS_X [LATTICE_SPACING]\n";
+      return 1;
+    }
+  try
+    {
+      const unsigned int cells_x = std::stoi(argv[1]);
+      if (argc > 2)
+        coupled(cells_x, std::stod(argv[2]));
+      else
+        pure_fe(cells_x);
+    }
+  catch (const std::exception &error)
+    {
+      std::cerr << error.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
