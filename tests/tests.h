@@ -40,20 +40,32 @@ namespace PeriArlequinTests
 
   /**
    * Parameter text of subsection "Boundary conditions": a traction of @p stress [Pa] pulling
-   * the y faces (boundary ids 2 and 3) apart, the others free.
+   * the faces normal to axis @p axis (boundary ids 2 axis and 2 axis + 1) apart (pushing them
+   * together if negative), the others free.
    */
   inline std::string
-  opposite_y_tractions(const double stress, const unsigned int dim)
+  opposite_tractions(const double stress, const unsigned int dim, const unsigned int axis)
   {
     std::ostringstream text;
     text << "subsection Boundary conditions\n";
-    for (const unsigned int id : {2, 3})
-      text << "  subsection Boundary " << id
-           << "\n    set Type = traction\n    subsection Function\n"
-           << "      set Function expression = 0; " << (id == 2 ? -stress : stress)
-           << (dim == 3 ? "; 0" : "") << "\n    end\n  end\n";
+    for (const unsigned int side : {0, 1})
+      {
+        text << "  subsection Boundary " << 2 * axis + side
+             << "\n    set Type = traction\n    subsection Function\n"
+             << "      set Function expression = ";
+        for (unsigned int d = 0; d < dim; ++d)
+          text << (d > 0 ? "; " : "") << (d == axis ? (side == 0 ? -stress : stress) : 0.);
+        text << "\n    end\n  end\n";
+      }
     text << "end\n";
     return text.str();
+  }
+
+  /** opposite_tractions() on the y faces (boundary ids 2 and 3). */
+  inline std::string
+  opposite_y_tractions(const double stress, const unsigned int dim)
+  {
+    return opposite_tractions(stress, dim, 1);
   }
 
   /** Parameter text that silences files and progress: the deterministic test mode. */

@@ -228,13 +228,7 @@ namespace
          << "subsection Material\n  set Young's modulus = " << E
          << "\n  set Poisson's ratio = 0.22\n  set Density = " << rho
          << "\n  set Two-dimensional model = plane stress\nend\n"
-         << "subsection Boundary conditions\n";
-    for (const unsigned int id : {0, 1})
-      text << "  subsection Boundary " << id
-           << "\n    set Type = traction\n    subsection Function\n"
-           << "      set Function expression = " << (id == 0 ? pressure : -pressure)
-           << "; 0\n    end\n  end\n";
-    text << "end\n"
+         << opposite_tractions(-pressure, 2, 0)
          << "subsection Peridynamics\n  set Region = 0, 0 : " << plate_length << ", "
          << plate_height << "\n  set Lattice spacing = " << dx << "\n  set Horizon factor = 3\n";
     if (cut)

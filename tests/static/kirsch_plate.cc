@@ -93,13 +93,7 @@ namespace
          << "subsection Material\n  set Young's modulus = " << E
          << "\n  set Poisson's ratio = " << nu
          << "\n  set Density = 7850\n  set Two-dimensional model = plane stress\nend\n"
-         << "subsection Boundary conditions\n";
-    for (const unsigned int id : {0, 1})
-      text << "  subsection Boundary " << id
-           << "\n    set Type = traction\n    subsection Function\n"
-           << "      set Function expression = " << (id == 0 ? -sigma : sigma)
-           << "; 0\n    end\n  end\n";
-    text << "end\n"
+         << opposite_tractions(sigma, 2, 0)
          << "subsection Time\n  set Integration = static then explicit\n  set Time step = "
          << time_step << "\n  set End time = " << 5 * time_step << "\nend\n"
          << "subsection Static solve\n  set Tolerance = 1e-8\nend\n"

@@ -50,13 +50,7 @@ namespace
          << "subsection Material\n  set Young's modulus = " << E
          << "\n  set Poisson's ratio = " << nu
          << "\n  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
-         << "subsection Boundary conditions\n";
-    for (const unsigned int id : {0, 1})
-      text << "  subsection Boundary " << id
-           << "\n    set Type = traction\n    subsection Function\n"
-           << "      set Function expression = " << (id == 0 ? -sigma : sigma)
-           << "; 0\n    end\n  end\n";
-    text << "end\n"
+         << opposite_tractions(sigma, 2, 0)
          << "subsection Time\n  set Integration = static then explicit\n  set Time step = 4e-8\n"
          << "  set End time = 4e-6\nend\n"
          << quiet_output();
