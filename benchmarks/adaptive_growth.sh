@@ -17,15 +17,11 @@
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$top/benchmarks/common.sh"
-builds=("$(cd "${1:-$top/build}" && pwd)")
-[ -n "${2:-}" ] && builds+=("$(cd "$2" && pwd)")
-repeats=${REPEATS:-3}
+builds_repeats_and_work "$@"
 zones=${ZONES:-"0.032 0.064 0.126"}
 sides=${SIDES:-"1 3 6"}
 IFS=, read -r -a labels <<< "${LABELS:-build 1,build 2}"
 growths=5
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for b in "${builds[@]}"; do
   [ -f "$b/CMakeCache.txt" ] && cmake --build "$b" --target periarlequin-growth-cost > /dev/null
 done

@@ -13,11 +13,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$top/benchmarks/common.sh"
-builds=("$(cd "${1:-$top/build}" && pwd)")
-[ -n "${2:-}" ] && builds+=("$(cd "$2" && pwd)")
-repeats=${REPEATS:-3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+builds_repeats_and_work "$@"
 cat > "$work/case.prm" <<PRM
 include $top/studies/adaptive_zone/plate_3d.prm
 subsection Peridynamics

@@ -21,3 +21,14 @@ subsection Output
 end
 PRM
 }
+
+# The build directories of a script's arguments ("[build-dir] [other-build-dir]", the first
+# defaulting to $top/build) as absolute paths in the array builds; REPEATS (3) runs of each in
+# repeats; a scratch directory in work, removed on exit.
+builds_repeats_and_work() {
+  builds=("$(cd "${1:-$top/build}" && pwd)")
+  if [ -n "${2:-}" ]; then builds+=("$(cd "$2" && pwd)"); fi
+  repeats=${REPEATS:-3}
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+}

@@ -12,6 +12,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -20,8 +21,11 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace PeriArlequinTests
 {
@@ -50,6 +54,33 @@ namespace PeriArlequinTests
       stiffness.reinit(sparsity);
       load.reinit(dofs.n_dofs());
       assemble();
+    }
+
+    /** Nodal values by support point (rounded to 1 nm) and component. */
+    using NodalValues = std::map<std::tuple<long, long, unsigned int>, double>;
+
+    static std::tuple<long, long, unsigned int>
+    key(const Point<2> &p, const unsigned int component)
+    {
+      return {std::lround(p[0] * 1e9), std::lround(p[1] * 1e9), component};
+    }
+
+    /** The nodal values of a solution @p u of this system (constraints distributed). */
+    NodalValues
+    nodal_values(const Vector<double> &u) const
+    {
+      std::vector<Point<2>> points(dofs.n_dofs());
+      DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dofs, points);
+      NodalValues                          nodal;
+      const unsigned int                   n = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> indices(n);
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          cell->get_dof_indices(indices);
+          for (unsigned int i = 0; i < n; ++i)
+            nodal[key(points[indices[i]], fe.system_to_component_index(i).first)] = u(indices[i]);
+        }
+      return nodal;
     }
 
     /** Parameter text of the same case for the library (without Output and Static solve). */

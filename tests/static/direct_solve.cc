@@ -13,10 +13,7 @@
 #include <periarlequin/simulator.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/sparse_direct.h>
-
-#include <map>
 
 #include "../tests.h"
 #include "cantilever_system.h"
@@ -27,17 +24,8 @@ namespace
 {
   constexpr unsigned int cells_x = 40, cells_y = 8;
 
-  /** Nodal displacements of the direct solve, by support point (rounded to 1 nm) and component. */
-  using NodalValues = std::map<std::tuple<long, long, unsigned int>, double>;
-
-  std::tuple<long, long, unsigned int>
-  key(const Point<2> &p, const unsigned int component)
-  {
-    return {std::lround(p[0] * 1e9), std::lround(p[1] * 1e9), component};
-  }
-
   /** Solve K u = f of the cantilever, assembled apart from the library, with UMFPACK. */
-  NodalValues
+  CantileverSystem::NodalValues
   direct_solution()
   {
     CantileverSystem    system(cells_x, cells_y);
@@ -46,20 +34,7 @@ namespace
     solver.initialize(system.stiffness);
     solver.vmult(u, system.load);
     system.constraints.distribute(u);
-
-    std::vector<Point<2>> points(system.dofs.n_dofs());
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(), system.dofs, points);
-    NodalValues                          nodal;
-    const unsigned int                   n = system.fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> indices(n);
-    for (const auto &cell : system.dofs.active_cell_iterators())
-      {
-        cell->get_dof_indices(indices);
-        for (unsigned int i = 0; i < n; ++i)
-          nodal[key(points[indices[i]], system.fe.system_to_component_index(i).first)] =
-            u(indices[i]);
-      }
-    return nodal;
+    return system.nodal_values(u);
   }
 
   void
@@ -71,17 +46,20 @@ namespace
     plate->setup();
     const auto result = plate->solve_static();
     report("relaxation iterations", result.iterations);
-    const NodalValues exact   = direct_solution();
-    double            largest = 0;
+    const auto exact   = direct_solution();
+    double     largest = 0;
     for (const auto &[where, value] : exact)
       largest = std::max(largest, std::abs(value));
     double      error = 0;
     const auto &u     = plate->get_fe_zone().get_state().displacement;
-    for_each_fe_dof(
-      *plate,
-      [&](const unsigned int dof, const Point<2> &point, const unsigned int component) {
-        error = std::max(error, std::abs(u.local_element(dof) - exact.at(key(point, component))));
-      });
+    for_each_fe_dof(*plate,
+                    [&](const unsigned int dof,
+                        const Point<2>    &point,
+                        const unsigned int component) {
+                      error = std::max(error,
+                                       std::abs(u.local_element(dof) -
+                                                exact.at(CantileverSystem::key(point, component))));
+                    });
     check_below("largest |u_relaxation - u_direct| over the largest displacement",
                 Utilities::MPI::max(error, MPI_COMM_WORLD) / largest,
                 1e-5);
