@@ -14,7 +14,7 @@
 #include <periarlequin/io/pd_output.h>
 #include <periarlequin/pd/pd_zone.h>
 #include <periarlequin/postprocess/postprocessor.h>
-#include <periarlequin/time/dynamic_relaxation.h>
+#include <periarlequin/time/static_solver.h>
 #include <periarlequin/time/predictor_corrector.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -103,7 +103,7 @@ namespace PeriArlequin
      * first with Time/Integration = static then explicit. Prints the iterations and the
      * residual reached; throws if it does not converge.
      */
-    typename DynamicRelaxation<dim>::Result
+    typename StaticSolver<dim>::Result
     solve_static();
 
     /**
@@ -238,9 +238,9 @@ namespace PeriArlequin
   private:
     /**
      * The static equilibrium under the loads of the current time, bonds unbroken, left at
-     * rest (one DynamicRelaxation kept for the run); progress lines on rank 0.
+     * rest (one StaticSolver kept for the run); progress lines on rank 0.
      */
-    typename DynamicRelaxation<dim>::Result
+    typename StaticSolver<dim>::Result
     relax_to_equilibrium();
     /**
      * The step of the clock: Time/Time step, or Static solve/Load step for a quasi-static
@@ -361,8 +361,8 @@ namespace PeriArlequin
     std::uint64_t relaxation_steps = 0;
     /** Has a quasi-static run solved for the loads of t = 0? */
     bool quasi_static_started = false;
-    /** The relaxation of static and quasi-static solves (created at the first). */
-    std::unique_ptr<DynamicRelaxation<dim>> relaxation;
+    /** The solver of static and quasi-static equilibria (created at the first). */
+    std::unique_ptr<StaticSolver<dim>> static_solver;
     Parameters::Output                      output_parameters;
     Parameters::Checkpoint                  checkpoint_parameters;
     /** The parameters a checkpoint must agree with (checkpointed_parameters()). */

@@ -247,6 +247,23 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  std::string
+  ArlequinCoupling<dim>::conjugate_gradient_obstacle() const
+  {
+    if (parameters.blending == Parameters::Blending::energy)
+      return "";
+    return "Coupling/Blending = " + selection_name(parameters.blending, Parameters::blending_names) +
+           ": its forces derive from no energy (the coupled stiffness is not symmetric)";
+  }
+
+  template <int dim>
+  void
+  ArlequinCoupling<dim>::solve_multipliers_exactly(const bool exact)
+  {
+    solver->solve_exactly(exact);
+  }
+
+  template <int dim>
   MultiplierSolver<dim> &
   ArlequinCoupling<dim>::multiplier_solver()
   {

@@ -20,40 +20,64 @@ namespace PeriArlequin
     , method(method)
   {
     fe_scratch.reinit(fe_inverse_mass);
-    space.initialize_vector(diagonal);
-    if (method == Parameters::MultiplierSolver::diagonal)
+    space.initialize_vector(row_sums);
+    if (method == Parameters::MultiplierSolver::cg)
       {
-        // Positive for FE_Q1, whose shape functions are non-negative: A has no negative
-        // entry. Shape functions that change sign can make a row sum vanish, while CG only
-        // needs A to be positive definite.
-        row_sum_diagonal(diagonal);
-        for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
-          AssertThrow(diagonal.local_element(m) >= 0,
-                      ExcMessage("Invalid input: parameter 'Coupling/Multiplier solver' = "
-                                 "'diagonal'; a row sum of the multiplier matrix A is "
-                                 "negative; allowed: 'cg' (conjugate gradients preconditioned "
-                                 "by the diagonal of A, positive since A is positive "
-                                 "definite)."));
+        prepare_exact_solve();
+        return;
       }
-    else
-      jacobi_diagonal(diagonal);
+    // Positive for FE_Q1, whose shape functions are non-negative: A has no negative entry.
+    // Shape functions that change sign can make a row sum vanish, while CG only needs A to be
+    // positive definite.
+    row_sum_diagonal(row_sums);
+    for (unsigned int m = 0; m < row_sums.locally_owned_size(); ++m)
+      AssertThrow(row_sums.local_element(m) >= 0,
+                  ExcMessage("Invalid input: parameter 'Coupling/Multiplier solver' = "
+                             "'diagonal'; a row sum of the multiplier matrix A is "
+                             "negative; allowed: 'cg' (conjugate gradients preconditioned "
+                             "by the diagonal of A, positive since A is positive "
+                             "definite)."));
+    set_free_rows(row_sums);
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::set_free_rows(const VectorType &diagonal)
+  {
     // A multiplier whose FE DoFs and PD nodes all move as prescribed (zero inverse masses) has
     // a zero row and column in A: it transmits no force, and its constraint holds as well as
     // the prescribed fields agree. Its equation is dropped (lambda = 0 there).
     space.initialize_vector(free_rows);
     for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
       free_rows.local_element(m) = diagonal.local_element(m) > 0 ? 1. : 0.;
-    if (method == Parameters::MultiplierSolver::diagonal)
-      return;
-    for (unsigned int m = 0; m < diagonal.locally_owned_size(); ++m)
-      diagonal.local_element(m) =
-        free_rows.local_element(m) > 0 ? 1. / diagonal.local_element(m) : 0.;
-    preconditioner.reinit(diagonal);
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::prepare_exact_solve()
+  {
+    space.initialize_vector(inverse_diagonal);
+    jacobi_diagonal(inverse_diagonal);
+    set_free_rows(inverse_diagonal);
+    for (unsigned int m = 0; m < inverse_diagonal.locally_owned_size(); ++m)
+      inverse_diagonal.local_element(m) =
+        free_rows.local_element(m) > 0 ? 1. / inverse_diagonal.local_element(m) : 0.;
+    preconditioner.reinit(inverse_diagonal);
     a_operator.vmult               = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
     a_operator.reinit_range_vector = [this](VectorType &v, const bool) {
       this->space.initialize_vector(v);
     };
     a_operator.reinit_domain_vector = a_operator.reinit_range_vector;
+    exact_solve_prepared            = true;
+  }
+
+  template <int dim>
+  void
+  MultiplierSolver<dim>::solve_exactly(const bool exact)
+  {
+    if (exact && !exact_solve_prepared)
+      prepare_exact_solve();
+    exact_on_request = exact;
   }
 
   template <int dim>
@@ -102,11 +126,11 @@ namespace PeriArlequin
   MultiplierSolver<dim>::solve(VectorType &lambda, const VectorType &rhs)
   {
     iterations = 0;
-    if (method == Parameters::MultiplierSolver::diagonal)
+    if (method == Parameters::MultiplierSolver::diagonal && !exact_on_request)
       {
         for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
           lambda.local_element(m) =
-            free_rows.local_element(m) > 0 ? rhs.local_element(m) / diagonal.local_element(m) : 0.;
+            free_rows.local_element(m) > 0 ? rhs.local_element(m) / row_sums.local_element(m) : 0.;
         return;
       }
     free_rhs = rhs;

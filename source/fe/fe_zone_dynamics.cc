@@ -364,6 +364,75 @@ namespace PeriArlequin
     return {std::max(sums[0], 0.), sums[1]};
   }
 
+  template <int dim>
+  void
+  FEZone<dim>::take_projected_residual(const double dt)
+  {
+    std::vector<double> prescribed_acceleration(prescribed.size());
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      prescribed_acceleration[k] = state.acceleration.local_element(prescribed[k].local_index);
+    for (unsigned int i = 0; i < state.velocity.locally_owned_size(); ++i)
+      state.acceleration.local_element(i) = 2. / dt * state.velocity.local_element(i);
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      state.acceleration.local_element(prescribed[k].local_index) = prescribed_acceleration[k];
+    scale_velocities(0.);
+  }
+
+  template <int dim>
+  double
+  FEZone<dim>::squared_residual_norm() const
+  {
+    const auto term = [&](const unsigned int i) {
+      const double a = state.acceleration.local_element(i);
+      return mass.local_element(i) * a * a;
+    };
+    double sum = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      sum += term(i);
+    for (const auto &dof : prescribed)
+      sum -= term(dof.local_index);
+    return Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::update_search_direction(const double beta)
+  {
+    // A restart takes the current layout (the DoFs may have changed since the last solve).
+    if (beta == 0.)
+      search_direction.reinit(state.acceleration, true);
+    for (unsigned int i = 0; i < search_direction.locally_owned_size(); ++i)
+      search_direction.local_element(i) =
+        state.acceleration.local_element(i) +
+        (beta == 0. ? 0. : beta * search_direction.local_element(i));
+    for (const auto &dof : prescribed)
+      search_direction.local_element(dof.local_index) = 0.;
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::move_along_search_direction(const double s)
+  {
+    for (unsigned int i = 0; i < search_direction.locally_owned_size(); ++i)
+      state.displacement.local_element(i) =
+        relaxation_displacement.local_element(i) + s * search_direction.local_element(i);
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::extrapolate_relaxation_step(const double c)
+  {
+    for (unsigned int i = 0; i < state.displacement.locally_owned_size(); ++i)
+      {
+        double &u = state.displacement.local_element(i);
+        double &a = state.acceleration.local_element(i);
+        u         = relaxation_displacement.local_element(i) +
+            c * (u - relaxation_displacement.local_element(i));
+        a = relaxation_acceleration.local_element(i) +
+            c * (a - relaxation_acceleration.local_element(i));
+      }
+  }
+
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
 #define PERIARLEQUIN_INSTANTIATE(dim)                                                            \
   template void        FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);    \
@@ -393,7 +462,12 @@ namespace PeriArlequin
   template void                           FEZone<dim>::scale_velocities(const double);           \
   template void                           FEZone<dim>::start_relaxation_step();                  \
   template std::pair<double, double>      FEZone<dim>::relaxation_step_sums() const;             \
-  template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;
+  template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;            \
+  template void   FEZone<dim>::take_projected_residual(const double);                            \
+  template double FEZone<dim>::squared_residual_norm() const;                                    \
+  template void   FEZone<dim>::update_search_direction(const double);                            \
+  template void   FEZone<dim>::move_along_search_direction(const double);                        \
+  template void   FEZone<dim>::extrapolate_relaxation_step(const double);
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

@@ -566,6 +566,35 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  RigidProjectile<dim>::take_projected_residual(const double)
+  {
+    velocity = 0;
+  }
+
+  template <int dim>
+  double
+  RigidProjectile<dim>::squared_residual_norm() const
+  {
+    return 0.;
+  }
+
+  template <int dim>
+  void
+  RigidProjectile<dim>::update_search_direction(const double)
+  {}
+
+  template <int dim>
+  void
+  RigidProjectile<dim>::move_along_search_direction(const double)
+  {}
+
+  template <int dim>
+  void
+  RigidProjectile<dim>::extrapolate_relaxation_step(const double)
+  {}
+
+  template <int dim>
   const Point<dim> &
   RigidProjectile<dim>::get_position() const
   {

@@ -570,6 +570,76 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  PDZone<dim>::take_projected_residual(const double dt)
+  {
+    const auto v = state.velocities();
+    const auto a = state.accelerations();
+    std::vector<double> prescribed_acceleration;
+    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
+      prescribed_acceleration.push_back(a[i][d]);
+    });
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (!slave[i])
+        a[i] = 2. / dt * v[i];
+    auto kept = prescribed_acceleration.begin();
+    prescribed.for_each_component(
+      [&](const unsigned int i, const unsigned int d) { a[i][d] = *kept++; });
+    scale_velocities(0.);
+  }
+
+  template <int dim>
+  double
+  PDZone<dim>::squared_residual_norm() const
+  {
+    const auto a   = state.accelerations();
+    double     sum = 0;
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      if (!slave[i])
+        sum += particle_mass(i) * a[i].norm_square();
+    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
+      if (!slave[i])
+        sum -= particle_mass(i) * a[i][d] * a[i][d];
+    });
+    return Utilities::MPI::sum(sum, communicator);
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::update_search_direction(const double beta)
+  {
+    const auto a = state.accelerations();
+    // A restart takes the current particles (they may have changed since the last solve).
+    if (beta == 0.)
+      search_direction.assign(ghosts.n_owned(), Tensor<1, dim>());
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      search_direction[i] = slave[i] ? Tensor<1, dim>() : a[i] + beta * search_direction[i];
+    prescribed.for_each_component(
+      [&](const unsigned int i, const unsigned int d) { search_direction[i][d] = 0.; });
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::move_along_search_direction(const double s)
+  {
+    const auto u = state.displacements();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      u[i] = relaxation_displacement[i] + s * search_direction[i];
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::extrapolate_relaxation_step(const double c)
+  {
+    const auto u = state.displacements(), a = state.accelerations();
+    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
+      {
+        u[i] = relaxation_displacement[i] + c * (u[i] - relaxation_displacement[i]);
+        a[i] = relaxation_acceleration[i] + c * (a[i] - relaxation_acceleration[i]);
+      }
+  }
+
+  template <int dim>
+  void
   PDZone<dim>::suspend_fracture(const bool suspended)
   {
     fracture_suspended = suspended;

@@ -79,34 +79,46 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  typename DynamicRelaxation<dim>::Result
+  typename StaticSolver<dim>::Result
   Simulator<dim>::relax_to_equilibrium()
   {
     TimerOutput::Scope scope(timer, "static solve");
-    if (!relaxation)
+    if (!static_solver)
       {
         // Without a coupling (whose multiplier matrix is built for the time step) the
         // relaxation needs no accuracy in time: it steps at 0.9 of the estimated stable step.
         const double step = coupling ? time_parameters.time_step :
                                        std::max(time_parameters.time_step, 0.9 * stable_time_step);
-        relaxation =
-          std::make_unique<DynamicRelaxation<dim>>(static_parameters, zones, *integrator, step);
+        std::string obstacle = coupling ? coupling->conjugate_gradient_obstacle() : "";
+        if (contact)
+          obstacle = "Contact/Model = " + contact_model +
+                     ": contact forces switch on and off, they derive from no quadratic energy";
+        if (pd_zone && pd_zone->get_particle_contact())
+          obstacle = "Peridynamics/Particle contact: contact forces switch on and off, they "
+                     "derive from no quadratic energy";
+        // The explicit loop holds the coupling's constraint on the velocities only: it keeps
+        // at rest the relaxation's equilibrium, not the constrained one of conjugate
+        // gradients, from which it would drift. A preload for it is therefore relaxed.
+        const bool before_explicit_loop =
+          coupling && time_parameters.integration == Parameters::Integration::static_then_explicit;
+        static_solver = StaticSolver<dim>::create(
+          static_parameters, zones, *integrator, step, obstacle, before_explicit_loop);
         // A checkpoint of a quasi-static run holds an equilibrium.
         if (resumed)
-          relaxation->remember_equilibrium();
+          static_solver->remember_equilibrium();
       }
     if (pd_zone)
       pd_zone->suspend_fracture(true);
     Timer        clock;
     double       last_report = 0;
     const double interval    = output_parameters.progress_interval;
-    const auto result = relaxation->solve([&](const unsigned int iteration, const double residual) {
+    const auto result = static_solver->solve([&](const unsigned int iteration, const double residual) {
       // Rank 0's clock decides for all, as for the progress of the time loop.
       const double wall = Utilities::MPI::broadcast(communicator, clock.wall_time(), 0);
       if (interval > 0 && wall - last_report >= interval)
         {
           last_report = wall;
-          pcout << "  static solve: iteration " << iteration << ", |M a| / |F| = " << residual
+          pcout << "  static solve (" << static_solver->name() << "): iteration " << iteration << ", |M a| / |F| = " << residual
                 << ", wall " << std::fixed << std::setprecision(1) << wall << " s"
                 << std::defaultfloat << std::setprecision(6) << std::endl;
         }
@@ -118,7 +130,7 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  typename DynamicRelaxation<dim>::Result
+  typename StaticSolver<dim>::Result
   Simulator<dim>::solve_static()
   {
     if (!setup_done)
@@ -133,8 +145,9 @@ namespace PeriArlequin
     double strain_energy = 0;
     for (const IntegratedZone *zone : zones)
       strain_energy += zone->strain_energy();
-    pcout << "  static solve: equilibrium after " << result.iterations << " iterations of "
-          << relaxation->get_time_step() << " s, |M a| / |F| = " << result.relative_residual
+    pcout << "  static solve: equilibrium after " << result.iterations << " iterations ("
+          << static_solver->name() << ") of "
+          << static_solver->get_time_step() << " s, |M a| / |F| = " << result.relative_residual
           << " (Static solve/Tolerance " << static_parameters.tolerance << "), strain energy "
           << strain_energy << " J, " << clock.wall_time() << " s" << std::endl;
     if (!static_parameters.released_cracks.empty())
@@ -208,10 +221,9 @@ namespace PeriArlequin
     if (pd_zone && pd_parameters.fracture)
       for (std::size_t broken = pd_zone->n_global_broken_bonds();; ++rounds)
         {
-          // One more relaxation step at rest, with fracture on: the force pass breaks the
-          // bonds beyond their limit in the equilibrium (it moves nothing but by dt^2/2
-          // times the residual acceleration).
-          integrator->relax(0., relaxation->get_time_step());
+          // One more force evaluation at rest, with fracture on: the force pass breaks the
+          // bonds beyond their limit in the equilibrium.
+          static_solver->evaluate_at_rest();
           ++relaxation_steps;
           const std::size_t now = pd_zone->n_global_broken_bonds();
           if (now == broken)

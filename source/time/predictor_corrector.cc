@@ -95,6 +95,25 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  PredictorCorrector<dim>::project_residual(const double dt)
+  {
+    for (IntegratedZone *zone : zones)
+      zone->scale_velocities(0.);
+    impose_prescribed_motion();
+    slaves_follow_masters();
+    compute_trial_accelerations();
+    compute_trial_velocities(dt);
+    if (coupling)
+      coupling->solve_multipliers_exactly(true);
+    solve_multipliers_and_correct();
+    if (coupling)
+      coupling->solve_multipliers_exactly(false);
+    for (IntegratedZone *zone : zones)
+      zone->take_projected_residual(dt);
+  }
+
+  template <int dim>
+  void
   PredictorCorrector<dim>::predict(const double dt)
   {
     for (IntegratedZone *zone : zones)

@@ -31,9 +31,13 @@
  *    there, PD boundary layers here, so forces are compared, not grip displacements, and
  *    the FE mesh and the lattice differ in stiffness by about 2 %; measured 2.0 % and 1.5 %).
  * 6. Checkpoint and restart: the run stopped at increment 9 (a checkpoint at its end) and
- *    resumed to the end gives the history of the run that did not stop: the same bonds,
- *    grip forces and work within 1e-9 (each relaxation starts from the restored
- *    equilibrium with the same scale of residual; measured 1e-15).
+ *    resumed to the end gives the history of the run that did not stop: the same bonds
+ *    broken at the same increments, grip forces and work within 1e-6. The restored state is
+ *    the saved one to the bit, but the restarted force pass sums in another order, and the
+ *    conjugate gradients of the static solves (automatic here: pure PD) carry that round-off
+ *    into their step lengths, so each solve stops at another point within its tolerance
+ *    (1e-5 of the grip force): measured 3.4e-8 (the relaxation, which contracts such
+ *    differences, gave 1e-15).
  */
 #include <periarlequin/simulator.h>
 
@@ -187,13 +191,20 @@ namespace
     if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
       {
         // 6. Stopped and resumed.
-        check_below(
-          "resumed run - run that did not stop, relative",
-          largest_column_difference(stopped_and_resumed()->get_energy_history(),
-                                    history,
-                                    {"broken_bonds", "reaction_boundary3_y", "external_work"},
-                                    true),
-          1e-9);
+        const auto resumed = stopped_and_resumed();
+        check("resumed run - run that did not stop: broken bond ends",
+              largest_column_difference(resumed->get_energy_history(),
+                                        history,
+                                        {"broken_bonds"},
+                                        false),
+              0,
+              0);
+        check_below("resumed run - run that did not stop: grip force and work, relative",
+                    largest_column_difference(resumed->get_energy_history(),
+                                              history,
+                                              {"reaction_boundary3_y", "external_work"},
+                                              true),
+                    1e-6);
 
         // 7. Coupled.
         auto coupled = make_simulator<2>(coupled_specimen_text(17));

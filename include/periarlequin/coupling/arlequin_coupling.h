@@ -90,6 +90,11 @@ namespace PeriArlequin
     n_coupled_particles() const override;
     unsigned int
     last_solver_iterations() const override;
+    /** Empty with energy blending: the other blendings' forces derive from no energy. */
+    std::string
+    conjugate_gradient_obstacle() const override;
+    void
+    solve_multipliers_exactly(const bool exact) override;
 
     /** The solver of the multiplier system. */
     MultiplierSolver<dim> &

@@ -101,6 +101,21 @@ namespace PeriArlequin
     /** Iterations of the last multiplier solve (0 for a direct or diagonal one). */
     virtual unsigned int
     last_solver_iterations() const = 0;
+
+    /**
+     * Why a static solve by conjugate gradients cannot run with this coupling (it needs
+     * forces that derive from an energy and a constraint it can project on exactly), or
+     * empty if it can.
+     */
+    virtual std::string
+    conjugate_gradient_obstacle() const
+    {
+      return "the coupling's forces do not derive from an energy";
+    }
+    /** Solve the multipliers exactly while @p exact (a static solve by conjugate gradients). */
+    virtual void
+    solve_multipliers_exactly(const bool /*exact*/)
+    {}
   };
 
   template <int dim>

@@ -57,6 +57,13 @@ namespace PeriArlequin
     void
     solve(VectorType &lambda, const VectorType &rhs);
 
+    /**
+     * Solve exactly (by CG) whatever the method while @p exact: a static solve by conjugate
+     * gradients needs the projection onto the constraint that the diagonal only
+     * approximates.
+     */
+    void
+    solve_exactly(const bool exact);
     /** CG iterations of the last solve (0 for the diagonal solver). */
     unsigned int
     last_iterations() const;
@@ -69,8 +76,19 @@ namespace PeriArlequin
     const double                       time_step;
     const Parameters::MultiplierSolver method;
 
-    /** Row sums (diagonal solver) or the inverse diagonal of A (CG preconditioner). */
-    VectorType diagonal;
+    /** Marks the rows with an equation, from the diagonal or the row sums of A. */
+    void
+    set_free_rows(const VectorType &diagonal);
+    /** The Jacobi preconditioner and the operator of the exact solve. */
+    void
+    prepare_exact_solve();
+
+    /** Row sums of A (diagonal solver). */
+    VectorType row_sums;
+    /** The inverse diagonal of A (the exact solve's preconditioner). */
+    VectorType inverse_diagonal;
+    bool       exact_solve_prepared = false;
+    bool       exact_on_request     = false;
     /** 1 for the multipliers with an equation, 0 where A has a zero row (all prescribed). */
     VectorType                            free_rows;
     VectorType                            free_rhs;

@@ -179,6 +179,16 @@ namespace PeriArlequin
     relaxation_step_sums() const override;
     std::pair<double, double>
     squared_force_norms() const override;
+    void
+    take_projected_residual(const double dt) override;
+    double
+    squared_residual_norm() const override;
+    void
+    update_search_direction(const double beta) override;
+    void
+    move_along_search_direction(const double s) override;
+    void
+    extrapolate_relaxation_step(const double c) override;
 
     const State &
     get_state() const;
@@ -357,6 +367,8 @@ namespace PeriArlequin
     VectorType              previous_displacement;
     /** Displacement and acceleration before a relaxation step. */
     VectorType                 relaxation_displacement, relaxation_acceleration;
+    /** The search direction of a static solve by conjugate gradients. */
+    VectorType search_direction;
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */

@@ -138,6 +138,16 @@ namespace PeriArlequin
     relaxation_step_sums() const override;
     std::pair<double, double>
     squared_force_norms() const override;
+    void
+    take_projected_residual(const double dt) override;
+    double
+    squared_residual_norm() const override;
+    void
+    update_search_direction(const double beta) override;
+    void
+    move_along_search_direction(const double s) override;
+    void
+    extrapolate_relaxation_step(const double c) override;
 
     /** The centre's position [m] and velocity [m/s]. */
     const Point<dim> &

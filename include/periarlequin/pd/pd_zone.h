@@ -195,6 +195,16 @@ namespace PeriArlequin
     relaxation_step_sums() const override;
     std::pair<double, double>
     squared_force_norms() const override;
+    void
+    take_projected_residual(const double dt) override;
+    double
+    squared_residual_norm() const override;
+    void
+    update_search_direction(const double beta) override;
+    void
+    move_along_search_direction(const double s) override;
+    void
+    extrapolate_relaxation_step(const double c) override;
     /**
      * Bonds do not break while @p suspended (a static solve under the loads of t = 0: the
      * equilibrium it seeks is that of the intact body).
@@ -705,6 +715,8 @@ namespace PeriArlequin
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
     /** Displacements and accelerations of the owned particles before a relaxation step. */
     std::vector<Tensor<1, dim>> relaxation_displacement, relaxation_acceleration;
+    /** The search direction of a static solve by conjugate gradients, owned particles. */
+    std::vector<Tensor<1, dim>> search_direction;
     double                      work        = 0;
     bool                        tracks_work = false;
     /** See suspend_fracture(). */

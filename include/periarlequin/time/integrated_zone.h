@@ -101,6 +101,37 @@ namespace PeriArlequin
      */
     virtual std::pair<double, double>
     squared_force_norms() const = 0;
+
+    /**
+     * @name Static solve by conjugate gradients, over the free components (neither
+     * prescribed nor slaves). The projected residual z = P M^-1 (F_ext - F_int), P the
+     * M-orthogonal projection onto the velocities that keep the coupling's constraint, is
+     * held as the acceleration; start_relaxation_step() keeps the displacement u0 and z0.
+     */
+    /** @{ */
+    /**
+     * After a step from rest whose multipliers made the velocities keep the constraint, the
+     * velocities of the free components are dt/2 z: z becomes the acceleration, the
+     * velocities zero.
+     */
+    virtual void
+    take_projected_residual(const double dt) = 0;
+    /** z . M z, the sum of m a . a over the free components [N m/s^2] (collective). */
+    virtual double
+    squared_residual_norm() const = 0;
+    /** The search direction p = a + @p beta p (0 on the other components). */
+    virtual void
+    update_search_direction(const double beta) = 0;
+    /** u = u0 + @p s p. */
+    virtual void
+    move_along_search_direction(const double s) = 0;
+    /**
+     * u = u0 + @p c (u - u0), a = z0 + @p c (a - z0): the state of a move @p c times the
+     * last one, for forces linear in the displacement.
+     */
+    virtual void
+    extrapolate_relaxation_step(const double c) = 0;
+    /** @} */
   };
 } // namespace PeriArlequin
 

@@ -61,6 +61,17 @@ namespace PeriArlequin
     relax(const double velocity_factor, const double dt);
 
     /**
+     * For a static solve by conjugate gradients: the projected residual z = P M^-1 (F_ext -
+     * F_int) of the current displacements (the prescribed ones imposed, the slaves on their
+     * masters) as the zones' accelerations, every velocity zero; P is the M-orthogonal
+     * projection onto the motions that keep the coupling's constraint. A step of @p dt (the
+     * coupling's) from rest, without damping, gives it: the exact multipliers make the trial
+     * velocities dt/2 a* keep the constraint, and so turn them into dt/2 z.
+     */
+    void
+    project_residual(const double dt);
+
+    /**
      * Advance the clock by its step without moving anything: the next loads and prescribed
      * displacements of a sequence of static solves (whose clock steps by the load step).
      */
