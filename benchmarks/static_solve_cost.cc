@@ -42,10 +42,7 @@ namespace
    * and the simulator.
    */
   std::unique_ptr<PeriArlequin::Simulator<2>>
-  relax(const std::string &text,
-        const std::string &method,
-        unsigned int      &iterations,
-        double            &wall)
+  relax(const std::string &text, const std::string &method, unsigned int &iterations, double &wall)
   {
     ParameterHandler prm;
     PeriArlequin::Simulator<2>::declare_parameters(prm);
@@ -61,8 +58,9 @@ namespace
 
   /** The largest difference of the FE displacements of @p simulator from @p exact. */
   double
-  largest_error(const PeriArlequin::Simulator<2>          &simulator,
-                const decltype(std::declval<CantileverSystem>().nodal_values(Vector<double>())) &exact)
+  largest_error(
+    const PeriArlequin::Simulator<2>                                                &simulator,
+    const decltype(std::declval<CantileverSystem>().nodal_values(Vector<double>())) &exact)
   {
     std::vector<unsigned int> local_dofs, components;
     std::vector<Point<2>>     points;
@@ -101,7 +99,7 @@ namespace
     const double krylov_wall = clock.wall_time();
     system.constraints.distribute(direct);
     system.constraints.distribute(krylov);
-    const auto     exact = system.nodal_values(direct);
+    const auto     exact      = system.nodal_values(direct);
     Vector<double> difference = krylov;
     difference -= direct;
     const double scale = direct.linfty_norm();
@@ -137,8 +135,8 @@ namespace
        << "  set Overlap width = " << 2 * cell_size << "\nend\n";
     // The coupled solves step with the case's step: 0.8 of the lattice's stable step.
     const double time_step = 0.8 * 0.4 * spacing / std::sqrt(CantileverSystem::E / 7800);
-    std::cout << std::setprecision(3) << "coupled (energy blending) " << cells_x << " x "
-              << cells_y << " cells, dx " << spacing << " m:";
+    std::cout << std::setprecision(3) << "coupled (energy blending) " << cells_x << " x " << cells_y
+              << " cells, dx " << spacing << " m:";
     double tip[2];
     for (const unsigned int m : {0u, 1u})
       {

@@ -252,7 +252,8 @@ namespace PeriArlequin
   {
     if (parameters.blending == Parameters::Blending::energy)
       return "";
-    return "Coupling/Blending = " + selection_name(parameters.blending, Parameters::blending_names) +
+    return "Coupling/Blending = " +
+           selection_name(parameters.blending, Parameters::blending_names) +
            ": its forces derive from no energy (the coupled stiffness is not symmetric)";
   }
 

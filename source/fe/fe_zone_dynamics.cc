@@ -434,40 +434,40 @@ namespace PeriArlequin
   }
 
   // The class is instantiated in fe_zone.cc; the members defined here are instantiated here.
-#define PERIARLEQUIN_INSTANTIATE(dim)                                                            \
-  template void        FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);    \
-  template std::string FEZone<dim>::name() const;                                                \
-  template void        FEZone<dim>::predict(const double);                                       \
-  template void        FEZone<dim>::impose_prescribed_motion(const double);                      \
-  template void        FEZone<dim>::compute_accelerations(const double);                         \
-  template void        FEZone<dim>::correct(const double);                                       \
-  template void        FEZone<dim>::account_work();                                              \
-  template void        FEZone<dim>::start_work_interval(const bool);                             \
-  template double      FEZone<dim>::kinetic_energy() const;                                      \
-  template double      FEZone<dim>::strain_energy() const;                                       \
-  template std::vector<double> FEZone<dim>::largest_principal_strains(const Quadrature<dim> &,   \
-                                                                      std::vector<Point<dim>> *) \
-    const;                                                                                       \
-  template Tensor<1, dim>                                 FEZone<dim>::linear_momentum() const;  \
-  template double                                         FEZone<dim>::external_work() const;    \
-  template const FEZone<dim>::State                      &FEZone<dim>::get_state() const;        \
-  template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()     \
-    const;                                                                                       \
-  template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);               \
-  template void FEZone<dim>::set_contact(Contact<dim> *);                                        \
-  template void FEZone<dim>::compute_forces(const double);                                       \
-  template FEZone<dim>::VectorType       &FEZone<dim>::interface_forces();                       \
-  template FEZone<dim>::VectorType       &FEZone<dim>::applied_forces();                         \
-  template const FEZone<dim>::VectorType &FEZone<dim>::applied_forces() const;                   \
-  template void                           FEZone<dim>::scale_velocities(const double);           \
-  template void                           FEZone<dim>::start_relaxation_step();                  \
-  template std::pair<double, double>      FEZone<dim>::relaxation_step_sums() const;             \
-  template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;            \
-  template void   FEZone<dim>::take_projected_residual(const double);                            \
-  template double FEZone<dim>::squared_residual_norm() const;                                    \
-  template void   FEZone<dim>::update_search_direction(const double);                            \
-  template void   FEZone<dim>::move_along_search_direction(const double);                        \
-  template void   FEZone<dim>::extrapolate_relaxation_step(const double);
+#define PERIARLEQUIN_INSTANTIATE(dim)                                                             \
+  template void        FEZone<dim>::initialize_state(const ProblemData<dim> &, const double);     \
+  template std::string FEZone<dim>::name() const;                                                 \
+  template void        FEZone<dim>::predict(const double);                                        \
+  template void        FEZone<dim>::impose_prescribed_motion(const double);                       \
+  template void        FEZone<dim>::compute_accelerations(const double);                          \
+  template void        FEZone<dim>::correct(const double);                                        \
+  template void        FEZone<dim>::account_work();                                               \
+  template void        FEZone<dim>::start_work_interval(const bool);                              \
+  template double      FEZone<dim>::kinetic_energy() const;                                       \
+  template double      FEZone<dim>::strain_energy() const;                                        \
+  template std::vector<double> FEZone<dim>::largest_principal_strains(const Quadrature<dim> &,    \
+                                                                      std::vector<Point<dim>> *)  \
+    const;                                                                                        \
+  template Tensor<1, dim>                                 FEZone<dim>::linear_momentum() const;   \
+  template double                                         FEZone<dim>::external_work() const;     \
+  template const FEZone<dim>::State                      &FEZone<dim>::get_state() const;         \
+  template const std::vector<FEZone<dim>::PrescribedDoF> &FEZone<dim>::get_prescribed_dofs()      \
+    const;                                                                                        \
+  template void FEZone<dim>::set_nodal_force_weights(const std::vector<double> &);                \
+  template void FEZone<dim>::set_contact(Contact<dim> *);                                         \
+  template void FEZone<dim>::compute_forces(const double);                                        \
+  template FEZone<dim>::VectorType       &FEZone<dim>::interface_forces();                        \
+  template FEZone<dim>::VectorType       &FEZone<dim>::applied_forces();                          \
+  template const FEZone<dim>::VectorType &FEZone<dim>::applied_forces() const;                    \
+  template void                           FEZone<dim>::scale_velocities(const double);            \
+  template void                           FEZone<dim>::start_relaxation_step();                   \
+  template std::pair<double, double>      FEZone<dim>::relaxation_step_sums() const;              \
+  template std::pair<double, double>      FEZone<dim>::squared_force_norms() const;               \
+  template void                           FEZone<dim>::take_projected_residual(const double);     \
+  template double                         FEZone<dim>::squared_residual_norm() const;             \
+  template void                           FEZone<dim>::update_search_direction(const double);     \
+  template void                           FEZone<dim>::move_along_search_direction(const double); \
+  template void                           FEZone<dim>::extrapolate_relaxation_step(const double);
 
   PERIARLEQUIN_INSTANTIATE(2)
   PERIARLEQUIN_INSTANTIATE(3)

@@ -572,8 +572,8 @@ namespace PeriArlequin
   void
   PDZone<dim>::take_projected_residual(const double dt)
   {
-    const auto v = state.velocities();
-    const auto a = state.accelerations();
+    const auto          v = state.velocities();
+    const auto          a = state.accelerations();
     std::vector<double> prescribed_acceleration;
     prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
       prescribed_acceleration.push_back(a[i][d]);

@@ -87,9 +87,9 @@ namespace PeriArlequin
       {
         // Without a coupling (whose multiplier matrix is built for the time step) the
         // relaxation needs no accuracy in time: it steps at 0.9 of the estimated stable step.
-        const double step = coupling ? time_parameters.time_step :
-                                       std::max(time_parameters.time_step, 0.9 * stable_time_step);
-        std::string obstacle = coupling ? coupling->conjugate_gradient_obstacle() : "";
+        const double step     = coupling ? time_parameters.time_step :
+                                           std::max(time_parameters.time_step, 0.9 * stable_time_step);
+        std::string  obstacle = coupling ? coupling->conjugate_gradient_obstacle() : "";
         if (contact)
           obstacle = "Contact/Model = " + contact_model +
                      ": contact forces switch on and off, they derive from no quadratic energy";
@@ -101,8 +101,12 @@ namespace PeriArlequin
         // gradients, from which it would drift. A preload for it is therefore relaxed.
         const bool before_explicit_loop =
           coupling && time_parameters.integration == Parameters::Integration::static_then_explicit;
-        static_solver = StaticSolver<dim>::create(
-          static_parameters, zones, *integrator, step, obstacle, before_explicit_loop);
+        static_solver = StaticSolver<dim>::create(static_parameters,
+                                                  zones,
+                                                  *integrator,
+                                                  step,
+                                                  obstacle,
+                                                  before_explicit_loop);
         // A checkpoint of a quasi-static run holds an equilibrium.
         if (resumed)
           static_solver->remember_equilibrium();
@@ -112,17 +116,19 @@ namespace PeriArlequin
     Timer        clock;
     double       last_report = 0;
     const double interval    = output_parameters.progress_interval;
-    const auto result = static_solver->solve([&](const unsigned int iteration, const double residual) {
-      // Rank 0's clock decides for all, as for the progress of the time loop.
-      const double wall = Utilities::MPI::broadcast(communicator, clock.wall_time(), 0);
-      if (interval > 0 && wall - last_report >= interval)
-        {
-          last_report = wall;
-          pcout << "  static solve (" << static_solver->name() << "): iteration " << iteration << ", |M a| / |F| = " << residual
-                << ", wall " << std::fixed << std::setprecision(1) << wall << " s"
-                << std::defaultfloat << std::setprecision(6) << std::endl;
-        }
-    });
+    const auto   result =
+      static_solver->solve([&](const unsigned int iteration, const double residual) {
+        // Rank 0's clock decides for all, as for the progress of the time loop.
+        const double wall = Utilities::MPI::broadcast(communicator, clock.wall_time(), 0);
+        if (interval > 0 && wall - last_report >= interval)
+          {
+            last_report = wall;
+            pcout << "  static solve (" << static_solver->name() << "): iteration " << iteration
+                  << ", |M a| / |F| = " << residual << ", wall " << std::fixed
+                  << std::setprecision(1) << wall << " s" << std::defaultfloat
+                  << std::setprecision(6) << std::endl;
+          }
+      });
     if (pd_zone)
       pd_zone->suspend_fracture(false);
     relaxation_steps += result.iterations + 1;
@@ -146,10 +152,10 @@ namespace PeriArlequin
     for (const IntegratedZone *zone : zones)
       strain_energy += zone->strain_energy();
     pcout << "  static solve: equilibrium after " << result.iterations << " iterations ("
-          << static_solver->name() << ") of "
-          << static_solver->get_time_step() << " s, |M a| / |F| = " << result.relative_residual
-          << " (Static solve/Tolerance " << static_parameters.tolerance << "), strain energy "
-          << strain_energy << " J, " << clock.wall_time() << " s" << std::endl;
+          << static_solver->name() << ") of " << static_solver->get_time_step()
+          << " s, |M a| / |F| = " << result.relative_residual << " (Static solve/Tolerance "
+          << static_parameters.tolerance << "), strain energy " << strain_energy << " J, "
+          << clock.wall_time() << " s" << std::endl;
     if (!static_parameters.released_cracks.empty())
       {
         AssertThrow(pd_zone,

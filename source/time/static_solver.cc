@@ -333,7 +333,8 @@ namespace PeriArlequin
             AssertThrow(false, ExcMessage(message.str()));
           }
         const double step = zmz * trial * trial / curvature;
-        for_each_zone([&](IntegratedZone &zone) { zone.extrapolate_relaxation_step(step / trial); });
+        for_each_zone(
+          [&](IntegratedZone &zone) { zone.extrapolate_relaxation_step(step / trial); });
         trial             = step;
         const double next = squared_residual_norm();
         residual          = this->relative_residual();
