@@ -14,8 +14,8 @@
 #include <periarlequin/io/pd_output.h>
 #include <periarlequin/pd/pd_zone.h>
 #include <periarlequin/postprocess/postprocessor.h>
-#include <periarlequin/time/static_solver.h>
 #include <periarlequin/time/predictor_corrector.h>
+#include <periarlequin/time/static_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
@@ -243,6 +243,12 @@ namespace PeriArlequin
     typename StaticSolver<dim>::Result
     relax_to_equilibrium();
     /**
+     * The solver of Static solve/Method, at set-up: a method the case does not allow is
+     * refused before anything runs.
+     */
+    void
+    create_static_solver();
+    /**
      * The step of the clock: Time/Time step, or Static solve/Load step for a quasi-static
      * run.
      */
@@ -363,8 +369,8 @@ namespace PeriArlequin
     bool quasi_static_started = false;
     /** The solver of static and quasi-static equilibria (created at the first). */
     std::unique_ptr<StaticSolver<dim>> static_solver;
-    Parameters::Output                      output_parameters;
-    Parameters::Checkpoint                  checkpoint_parameters;
+    Parameters::Output                 output_parameters;
+    Parameters::Checkpoint             checkpoint_parameters;
     /** The parameters a checkpoint must agree with (checkpointed_parameters()). */
     std::vector<std::string> physics_parameters;
     /** What a checkpoint holds besides the cell data; set while resuming from one. */

@@ -58,13 +58,13 @@ namespace PeriArlequin
       write_checkpoint();
     const double loop_time = wall_clock.wall_time();
     check_finite(kinetic_energy());
-    // A quasi-static run's work is its relaxation steps.
+    // A quasi-static run's work is its static-solve iterations.
     const bool quasi_static = time_parameters.integration == Parameters::Integration::quasi_static;
     const std::uint64_t steps_run =
       quasi_static ? relaxation_steps : static_cast<std::uint64_t>(n_steps - first_step);
     if (quasi_static)
       pcout << "Quasi-static: " << n_steps - first_step << " increments, " << steps_run
-            << " relaxation steps in " << loop_time << " s";
+            << " static-solve iterations in " << loop_time << " s";
     else
       pcout << "Time loop: " << steps_run << " steps in " << loop_time << " s";
     if (fe_zone)
@@ -79,38 +79,38 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  void
+  Simulator<dim>::create_static_solver()
+  {
+    // Without a coupling (whose multiplier matrix is built for the time step) the relaxation
+    // needs no accuracy in time: it steps at 0.9 of the estimated stable step.
+    const double step     = coupling ? time_parameters.time_step :
+                                       std::max(time_parameters.time_step, 0.9 * stable_time_step);
+    std::string  obstacle = coupling ? coupling->conjugate_gradient_obstacle() : "";
+    if (pd_zone && pd_zone->get_particle_contact())
+      obstacle = "Peridynamics/Particle contact: contact forces switch on and off, they derive "
+                 "from no quadratic energy";
+    // The explicit loop holds the coupling's constraint on the velocities only: it keeps at
+    // rest the relaxation's equilibrium, not the constrained one of conjugate gradients, from
+    // which it would drift. A preload for it is therefore relaxed.
+    const bool before_explicit_loop =
+      coupling && time_parameters.integration == Parameters::Integration::static_then_explicit;
+    static_solver = StaticSolver<dim>::create(static_parameters,
+                                              zones,
+                                              *integrator,
+                                              step,
+                                              obstacle,
+                                              before_explicit_loop);
+  }
+
+  template <int dim>
   typename StaticSolver<dim>::Result
   Simulator<dim>::relax_to_equilibrium()
   {
     TimerOutput::Scope scope(timer, "static solve");
-    if (!static_solver)
-      {
-        // Without a coupling (whose multiplier matrix is built for the time step) the
-        // relaxation needs no accuracy in time: it steps at 0.9 of the estimated stable step.
-        const double step     = coupling ? time_parameters.time_step :
-                                           std::max(time_parameters.time_step, 0.9 * stable_time_step);
-        std::string  obstacle = coupling ? coupling->conjugate_gradient_obstacle() : "";
-        if (contact)
-          obstacle = "Contact/Model = " + contact_model +
-                     ": contact forces switch on and off, they derive from no quadratic energy";
-        if (pd_zone && pd_zone->get_particle_contact())
-          obstacle = "Peridynamics/Particle contact: contact forces switch on and off, they "
-                     "derive from no quadratic energy";
-        // The explicit loop holds the coupling's constraint on the velocities only: it keeps
-        // at rest the relaxation's equilibrium, not the constrained one of conjugate
-        // gradients, from which it would drift. A preload for it is therefore relaxed.
-        const bool before_explicit_loop =
-          coupling && time_parameters.integration == Parameters::Integration::static_then_explicit;
-        static_solver = StaticSolver<dim>::create(static_parameters,
-                                                  zones,
-                                                  *integrator,
-                                                  step,
-                                                  obstacle,
-                                                  before_explicit_loop);
-        // A checkpoint of a quasi-static run holds an equilibrium.
-        if (resumed)
-          static_solver->remember_equilibrium();
-      }
+    // A checkpoint of a quasi-static run holds an equilibrium: it counts among those found.
+    if (resumed && relaxation_steps == 0)
+      static_solver->remember_equilibrium();
     if (pd_zone)
       pd_zone->suspend_fracture(true);
     Timer        clock;
@@ -240,7 +240,7 @@ namespace PeriArlequin
         }
     if (output_parameters.progress_interval > 0)
       pcout << "  increment " << get_step_number() << ", t = " << get_time() << " s: " << iterations
-            << " relaxation steps"
+            << " static-solve iterations"
             << (rounds > 0 ? ", " + std::to_string(new_breaks) + " bond ends broke in " +
                                std::to_string(rounds) + " rounds" :
                              "")
