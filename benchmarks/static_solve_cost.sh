@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The static solve (dynamic relaxation) against the problem size, and against a direct and a
-# Krylov solve of the same FE mesh: the clamped cantilever of tests/static/direct_solve under
-# an end shear (bending), Q1 on N x N/5 cells, pure FE for N = 40 ... 320; then coupled (PD on
-# [40, 60] mm, lattice 0.5 / 0.25 mm, strict force-blended coupling) for N = 40, 80. One run
-# each, 1 rank, 1 thread: iteration counts do not depend on the machine, wall times do. About
-# 4 minutes (the coupled N = 80 about 2).
+# The static solve against the problem size, and against a direct and a Krylov solve of the
+# same FE mesh: the clamped cantilever of tests/static/direct_solve under an end shear
+# (bending), Q1 on N x N/5 cells, pure FE for N = 40 ... 320, by the library's relaxation and
+# conjugate gradients; then coupled (PD on [40, 60] mm, lattice 0.5 / 0.25 mm, strict
+# coupling) for N = 40, 80: force blending by relaxation, energy blending by conjugate
+# gradients, each deflection against the pure FE one. One run each, 1 rank, 1 thread:
+# iteration counts do not depend on the machine, wall times do. About 5 minutes.
 #
 #   benchmarks/static_solve_cost.sh [build-dir]
 set -euo pipefail
