@@ -366,9 +366,9 @@ namespace PeriArlequin
     VectorType              previous_applied_force;
     VectorType              previous_displacement;
     /** Displacement and acceleration before a relaxation step. */
-    VectorType                 relaxation_displacement, relaxation_acceleration;
+    VectorType relaxation_displacement, relaxation_acceleration;
     /** The search direction of a static solve by conjugate gradients. */
-    VectorType search_direction;
+    VectorType                 search_direction;
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */
