@@ -23,7 +23,7 @@
  *    released beyond G0).
  * 5. On 2 ranks (this and the pure PD checks 1-4 only): the same bonds break at the same increments
  * as on rank 0 alone, and the grip force agrees within 1e-4 of the peak (the ranks sum in another
- * order: the relaxations stop an iteration apart, within their tolerance 1e-5).
+ * order: the solves stop an iteration apart, within their tolerance 1e-5).
  * 7. Coupled (the PD zone a band 30 mm high around the crack, Q1 elements of 2.5 mm
  *    outside, strict Arlequin coupling with force blending, a 5 mm overlap): the first
  *    bonds beyond the pre-crack and the first round of more than 40 break at grip forces
@@ -38,6 +38,12 @@
  *    into their step lengths, so each solve stops at another point within its tolerance
  *    (1e-5 of the grip force): measured 3.4e-8 (the relaxation, which contracts such
  *    differences, gave 1e-15).
+ * 8. Adaptive (one rank): PD around the pre-crack only at the start (15 of the 40 mm
+ *    width, 10 mm high), coupled by energy blending (so solved by conjugate gradients), FE
+ *    cells of 2.5 mm, growing with the crack (damage distance) between the rounds of breaks
+ *    of an increment, where an unstable crack runs: the first bonds and the first 40 break at
+ *    grip forces within 3 % of pure PD's (as in 7), the crack runs through (the grips then
+ *    carry less than 1 % of the peak), and cells were converted.
  */
 #include <periarlequin/simulator.h>
 
@@ -112,6 +118,26 @@ namespace
          << "  set Overlap width = 0.005\nend\n"
          << "subsection Time\n  set Time step = 5e-8\nend\n";
     return specimen_text(end_time) + band.str();
+  }
+
+  /**
+   * The specimen with PD only around the pre-crack at the start, [w/2 - a - 1.5 mm,
+   * w/2 + a + 1.5 mm] x [h/2 - 5 mm, h/2 + 5 mm], growing with the crack (Adaptive PD zone,
+   * damage distance), coupled to FE by energy blending (so solved by conjugate gradients).
+   */
+  std::string
+  adaptive_specimen_text(const double end_time)
+  {
+    std::ostringstream zone;
+    zone << "subsection Geometry\n  set Subdivisions = 16, 32\nend\n"
+         << "subsection Peridynamics\n  set Region = " << 0.5 * width - half_crack - 0.0015 << ", "
+         << 0.5 * height - 0.005 << " : " << 0.5 * width + half_crack + 0.0015 << ", "
+         << 0.5 * height + 0.005 << "\nend\n"
+         << "subsection Coupling\n  set Method = strict\n  set Blending = energy\n"
+         << "  set Overlap width = 0.005\nend\n"
+         << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\nend\n"
+         << "subsection Time\n  set Time step = 5e-8\nend\n";
+    return specimen_text(end_time) + zone.str();
   }
 
   /** The grip force at the first record with at least @p count bond ends broken since the start. */
@@ -216,6 +242,23 @@ namespace
                   force_when_broken(history, count),
                 1.,
                 0.03);
+
+        // 8. Adaptive.
+        auto adaptive = make_simulator<2>(adaptive_specimen_text(26));
+        adaptive->run();
+        const auto &grown = adaptive->get_energy_history();
+        for (const double count : {1., 40.})
+          check("adaptive over pure PD: grip force when " + std::to_string(int(count)) +
+                  " or more bond ends have broken",
+                force_when_broken(grown, count) / force_when_broken(history, count),
+                1.,
+                0.03);
+        const auto adaptive_force = grown.column("reaction_boundary3_y");
+        check_below("adaptive: grip force at the end over the peak",
+                    adaptive_force.back() /
+                      *std::max_element(adaptive_force.begin(), adaptive_force.end()),
+                    0.01);
+        check_above("adaptive: converted cells", adaptive->n_converted_cells(), 0.5);
       }
 
     // 5. All ranks against rank 0 alone.
