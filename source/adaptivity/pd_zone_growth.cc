@@ -149,7 +149,8 @@ namespace PeriArlequin
   PDZoneGrowth<dim>::initialize(const FEZone<dim>      &fe_zone,
                                 PDZone<dim>            &pd_zone,
                                 const ProblemData<dim> &data,
-                                const double            time_step)
+                                const double            time_step,
+                                const bool              dynamic)
   {
     const auto                 &pd       = pd_zone.get_parameters();
     const Parameters::Material &material = fe_zone.get_material();
@@ -162,8 +163,9 @@ namespace PeriArlequin
                                                                 std::max(parameters.lead_distance, 0.);
     // A horizon over the longitudinal wave speed: the time scale of the surface layer.
     const double horizon_time = pd.horizon() / material.longitudinal_wave_speed(dim);
-    context.settling_time =
-      parameters.settling_time == 0 ? 10. * horizon_time : std::max(parameters.settling_time, 0.);
+    context.settling_time     = !dynamic                      ? 0. :
+                                parameters.settling_time == 0 ? 10. * horizon_time :
+                                                                std::max(parameters.settling_time, 0.);
     pd_zone.set_settling_time(context.settling_time);
 
     notes.clear();
@@ -175,7 +177,7 @@ namespace PeriArlequin
         "FE, where nothing breaks (the FE strain check warns where the FE strain reaches the "
         "critical stretch). 'Conversion criterion = damage distance, strain' also converts "
         "the cells whose strain nears the critical stretch.");
-    if (context.settling_time < 5. * horizon_time)
+    if (dynamic && context.settling_time < 5. * horizon_time)
       {
         std::ostringstream note;
         note << "new particles that settle over less than five horizons over c_L ("

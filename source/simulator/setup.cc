@@ -144,7 +144,11 @@ namespace PeriArlequin
     if (blending)
       coupling->initialize(*blending, *fe_zone, *pd_zone, dt);
     if (zone_growth)
-      zone_growth->initialize(*fe_zone, *pd_zone, problem_data, dt);
+      zone_growth->initialize(*fe_zone,
+                              *pd_zone,
+                              problem_data,
+                              dt,
+                              time_parameters.integration != Parameters::Integration::quasi_static);
     stable_time_step =
       std::min(stable_time_step,
                pd_zone->estimate_stable_time_step(time_parameters.stability_iterations));
@@ -323,7 +327,10 @@ namespace PeriArlequin
               << " m between two checks); a growth caused by damage converts the FE cells "
               << "within " << growth.lead_distance
               << " m of the bonds broken since the previous one (the lead); new particles "
-              << "settle over " << growth.settling_time << " s" << std::endl;
+              << (growth.settling_time > 0 ? "settle over " : "do not settle");
+        if (growth.settling_time > 0)
+          pcout << growth.settling_time << " s";
+        pcout << std::endl;
         for (const std::string &note : zone_growth->get_notes())
           pcout << "  Note: " << note << std::endl;
       }

@@ -236,6 +236,10 @@ namespace PeriArlequin
             break;
           new_breaks += now - broken;
           broken = now;
+          // A crack that runs in this increment grows the zone round by round, as a
+          // dynamic one does step by step (its damage near an FE cell triggers a growth).
+          if (zone_growth)
+            grow_pd_zone();
           iterations += relax_to_equilibrium().iterations;
         }
     if (output_parameters.progress_interval > 0)

@@ -91,13 +91,16 @@ namespace PeriArlequin
     /**
      * The trigger distance, the settling time (given to @p pd_zone), the loaded boundaries of
      * @p data and the criterion's automatic defaults from the material and the time step
-     * @p time_step; check the criterion against the zones.
+     * @p time_step; check the criterion against the zones. New particles settle only in a
+     * @p dynamic run: a static solve takes them to their PD equilibrium itself, where a
+     * settling force (which fades in time) would be a load.
      */
     void
     initialize(const FEZone<dim>      &fe_zone,
                PDZone<dim>            &pd_zone,
                const ProblemData<dim> &data,
-               const double            time_step);
+               const double            time_step,
+               const bool              dynamic);
 
     /** Is the criterion asked after step @p step (every Check interval steps)? */
     bool
