@@ -104,15 +104,14 @@ namespace PeriArlequin
     compute_trial_accelerations();
     if (coupling)
       coupling->solve_multipliers_exactly(true);
-    // Projected twice: the multipliers of the trial accelerations, which carry the constraint
-    // forces, are solved to a relative 1e-12, an error that a poorly conditioned multiplier
-    // matrix (weak multipliers) makes larger than the residual near an equilibrium; the
-    // second projection removes it to 1e-12 of the residual itself.
-    for (const unsigned int pass : {0, 1})
+    // Coupled, projected twice: the multipliers of the trial accelerations, which carry the
+    // constraint forces, are solved to a relative 1e-12, an error that a poorly conditioned
+    // multiplier matrix (weak multipliers) makes larger than the residual near an
+    // equilibrium; the second projection removes it to 1e-12 of the residual itself. Each
+    // pass starts from rest (take_projected_residual() zeroes the velocities).
+    const unsigned int passes = coupling ? 2 : 1;
+    for (unsigned int pass = 0; pass < passes; ++pass)
       {
-        if (pass > 0)
-          for (IntegratedZone *zone : zones)
-            zone->scale_velocities(0.);
         compute_trial_velocities(dt);
         solve_multipliers_and_correct();
         for (IntegratedZone *zone : zones)
