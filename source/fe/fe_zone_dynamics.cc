@@ -400,11 +400,10 @@ namespace PeriArlequin
   {
     // A restart takes the current layout (the DoFs may have changed since the last solve).
     if (beta == 0.)
-      search_direction.reinit(state.acceleration, true);
+      search_direction.reinit(state.acceleration);
     for (unsigned int i = 0; i < search_direction.locally_owned_size(); ++i)
       search_direction.local_element(i) =
-        state.acceleration.local_element(i) +
-        (beta == 0. ? 0. : beta * search_direction.local_element(i));
+        state.acceleration.local_element(i) + beta * search_direction.local_element(i);
     for (const auto &dof : prescribed)
       search_direction.local_element(dof.local_index) = 0.;
   }
