@@ -246,7 +246,7 @@ namespace
                 0.03);
 
         // 8. Adaptive.
-        auto adaptive = make_simulator<2>(adaptive_specimen_text(26));
+        auto adaptive = make_simulator<2>(adaptive_specimen_text(20));
         adaptive->run();
         const auto &grown = adaptive->get_energy_history();
         for (const double count : {1., 40.})
@@ -289,12 +289,12 @@ namespace
                     1e-4);
 
         // 8 on several ranks: the adaptive specimen, growing round by round.
-        auto adaptive = make_simulator<2>(adaptive_specimen_text(26));
+        auto adaptive = make_simulator<2>(adaptive_specimen_text(20));
         adaptive->run();
         double adaptive_counts = 0, adaptive_forces = 0;
         if (is_root())
           {
-            auto serial = make_simulator<2>(adaptive_specimen_text(26), MPI_COMM_SELF);
+            auto serial = make_simulator<2>(adaptive_specimen_text(20), MPI_COMM_SELF);
             serial->run();
             adaptive_counts = largest_column_difference(adaptive->get_energy_history(),
                                                         serial->get_energy_history(),

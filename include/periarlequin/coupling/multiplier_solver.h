@@ -60,10 +60,13 @@ namespace PeriArlequin
     /**
      * Solve exactly (by CG) whatever the method while @p exact: a static solve by conjugate
      * gradients needs the projection onto the constraint that the diagonal only
-     * approximates.
+     * approximates. The solves of one such request (a projection, in one or more passes)
+     * add up to its multipliers; the first solve of the next request starts from them: the
+     * residuals a static solve projects converge, and so do their multipliers.
      */
     void
     solve_exactly(const bool exact);
+
     /** CG iterations of the last solve (0 for the diagonal solver). */
     unsigned int
     last_iterations() const;
@@ -82,6 +85,9 @@ namespace PeriArlequin
     /** The Jacobi preconditioner and the operator of the exact solve. */
     void
     prepare_exact_solve();
+    /** CG on A lambda = free_rhs, whose norm is @p rhs_norm > 0. */
+    void
+    solve_by_cg(VectorType &lambda, const double rhs_norm);
 
     /** Row sums of A (diagonal solver). */
     VectorType row_sums;
@@ -97,6 +103,13 @@ namespace PeriArlequin
     VectorType                            fe_scratch;
     typename MultiplierSpace<dim>::Values overlap_values, overlap_values_2;
     unsigned int                          iterations = 0;
+
+    /** The solves since the current exact request, and the sum of their solutions. */
+    unsigned int exact_solves = 0;
+    VectorType   request_multipliers;
+    /** The multipliers of the previous exact request, where its successor starts. */
+    VectorType previous_request_multipliers;
+    bool       previous_request_available = false;
   };
 } // namespace PeriArlequin
 
