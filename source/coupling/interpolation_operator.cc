@@ -22,11 +22,9 @@ namespace PeriArlequin
     row_begin.reserve(particles.size() + 1);
     row_begin.push_back(0);
     entries.clear();
-    entries.reserve(particles.size() * dof_handler.get_fe_collection().max_dofs_per_cell());
+    entries.reserve(particles.size() * dof_handler.get_fe_collection().max_dofs_per_cell() / dim);
     std::vector<types::global_dof_index> dof_indices;
-    // The shape functions of a vector element are those of its base elements: each base
-    // function is evaluated once a particle, not once per component.
-    std::vector<std::vector<double>> base_values;
+    std::vector<Entry>                   cell_entries;
     for (const unsigned int i : particles)
       {
         const auto &[triangulation_cell, unit_point] = locations[i];
@@ -45,35 +43,27 @@ namespace PeriArlequin
                                    "unknowns: the overlap and the slave layer must lie in FE "
                                    "cells (cells whose centre is outside Peridynamics/Region)."));
           }
+        // The FE zone's element is dim copies of one scalar element: node j of the scalar
+        // element carries the DoF of component c of copy c.
+        AssertThrow(fe.n_base_elements() == 1 && fe.element_multiplicity(0) == dim,
+                    ExcInternalError());
+        const auto &base = fe.base_element(0);
         dof_indices.resize(fe.n_dofs_per_cell());
         cell->get_dof_indices(dof_indices);
-        base_values.resize(fe.n_base_elements());
-        for (unsigned int b = 0; b < fe.n_base_elements(); ++b)
-          {
-            const auto &base = fe.base_element(b);
-            base_values[b].resize(base.n_dofs_per_cell());
-            for (unsigned int j = 0; j < base.n_dofs_per_cell(); ++j)
-              base_values[b][j] = base.shape_value(j, unit_point);
-          }
+        cell_entries.resize(base.n_dofs_per_cell());
+        for (unsigned int j = 0; j < base.n_dofs_per_cell(); ++j)
+          cell_entries[j].value = base.shape_value(j, unit_point);
         for (unsigned int k = 0; k < dof_indices.size(); ++k)
           {
-            const auto [base_and_copy, base_dof] = fe.system_to_base_index(k);
-            const double value                   = base_values[base_and_copy.first][base_dof];
-            if (value != 0)
-              entries.push_back(
-                {static_cast<unsigned int>(partitioner.global_to_local(dof_indices[k])),
-                 fe.system_to_component_index(k).first,
-                 value});
+            const auto [base_and_copy, node] = fe.system_to_base_index(k);
+            cell_entries[node].dofs[base_and_copy.second] =
+              static_cast<unsigned int>(partitioner.global_to_local(dof_indices[k]));
           }
+        for (const Entry &entry : cell_entries)
+          if (entry.value != 0)
+            entries.push_back(entry);
         row_begin.push_back(entries.size());
       }
-  }
-
-  template <int dim>
-  unsigned int
-  InterpolationOperator<dim>::n_rows() const
-  {
-    return row_begin.size() - 1;
   }
 
   template <int dim>
@@ -89,7 +79,8 @@ namespace PeriArlequin
   {
     Tensor<1, dim> value;
     for (const Entry &entry : row(r))
-      value[entry.component] += entry.value * x.local_element(entry.dof);
+      for (unsigned int d = 0; d < dim; ++d)
+        value[d] += entry.value * x.local_element(entry.dofs[d]);
     return value;
   }
 
@@ -116,7 +107,8 @@ namespace PeriArlequin
   {
     for (unsigned int r = 0; r < n_rows(); ++r)
       for (const Entry &entry : row(r))
-        x.local_element(entry.dof) += entry.value * values[r][entry.component];
+        for (unsigned int d = 0; d < dim; ++d)
+          x.local_element(entry.dofs[d]) += entry.value * values[r][d];
     x.compress(VectorOperation::add);
   }
 

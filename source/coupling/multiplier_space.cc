@@ -64,7 +64,8 @@ namespace PeriArlequin
       {
         Tensor<1, dim> sum;
         for (const auto &entry : overlap.row(r))
-          sum[entry.component] += entry.value * entry.value * fe_weights.local_element(entry.dof);
+          for (unsigned int d = 0; d < dim; ++d)
+            sum[d] += entry.value * entry.value * fe_weights.local_element(entry.dofs[d]);
         for (unsigned int d = 0; d < dim; ++d)
           diagonal.local_element(dim * r + d) = sum[d] + pd_weights[r];
       }
@@ -80,7 +81,8 @@ namespace PeriArlequin
     fe_scratch = 0.;
     for (unsigned int r = 0; r < overlap.n_rows(); ++r)
       for (const auto &entry : overlap.row(r))
-        fe_scratch.local_element(entry.dof) += 1.;
+        for (const unsigned int dof : entry.dofs)
+          fe_scratch.local_element(dof) += 1.;
     fe_scratch.compress(VectorOperation::add);
     for (unsigned int i = 0; i < fe_scratch.locally_owned_size(); ++i)
       if (fe_scratch.local_element(i) > 0)
@@ -122,14 +124,14 @@ namespace PeriArlequin
     fe_zone.initialize_vector(second_term);
     for (unsigned int r = 0; r < overlap.n_rows(); ++r)
       for (const auto &m : overlap.row(r))
-        {
-          second_term.local_element(m.dof) += m.value * m.value * pd_weights[r];
-          for (const auto &J : overlap.row(r))
-            if (J.component == m.component)
-              B.add(partitioner.local_to_global(m.dof),
-                    partitioner.local_to_global(J.dof),
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            second_term.local_element(m.dofs[d]) += m.value * m.value * pd_weights[r];
+            for (const auto &J : overlap.row(r))
+              B.add(partitioner.local_to_global(m.dofs[d]),
+                    partitioner.local_to_global(J.dofs[d]),
                     m.value * J.value);
-        }
+          }
     B.compress(VectorOperation::add);
     second_term.compress(VectorOperation::add);
     for (unsigned int k = 0; k < multiplier_dofs.size(); ++k)

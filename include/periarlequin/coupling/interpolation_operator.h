@@ -10,6 +10,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <array>
 #include <vector>
 
 namespace PeriArlequin
@@ -31,12 +32,15 @@ namespace PeriArlequin
     /** One vector per row (particle). */
     using Values = std::vector<Tensor<1, dim>>;
 
-    /** A non-zero N_IJ: local DoF index (owned or ghost), its vector component, value. */
+    /**
+     * A non-zero N_IJ: the value of the shape function of node J at particle I, and the
+     * local DoF index (owned or ghost) of each vector component of J. One entry for all
+     * components: the loops keep the row's vector in registers instead of indexing it.
+     */
     struct Entry
     {
-      unsigned int dof;
-      unsigned int component;
-      double       value;
+      double                        value;
+      std::array<unsigned int, dim> dofs;
     };
 
     /**
@@ -49,8 +53,12 @@ namespace PeriArlequin
            const PDZone<dim>               &pd_zone,
            const std::vector<unsigned int> &particles);
 
+    /** Inline: the loops over the rows of the coupling's operators test it at every row. */
     unsigned int
-    n_rows() const;
+    n_rows() const
+    {
+      return row_begin.size() - 1;
+    }
 
     /** The non-zero entries of row @p row. */
     ArrayView<const Entry>
