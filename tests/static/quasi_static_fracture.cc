@@ -45,7 +45,7 @@
  *    grip forces within 3 % of pure PD's (as in 7), the crack runs through (the grips then
  *    carry less than 1 % of the peak), and cells were converted. On 2 ranks (with 5): the
  *    same broken bonds and converted cells as rank 0 alone, the grip force within 1e-4 of
- *    the peak (measured 4.7e-8).
+ *    the peak (measured 5.1e-8; 4.7e-8 before the warm-started multiplier solves).
  */
 #include <periarlequin/simulator.h>
 
@@ -171,6 +171,30 @@ namespace
     return resumed;
   }
 
+  /**
+   * @p run, a finished run of @p text on all ranks, against the same case run on rank 0 alone:
+   * the largest difference in broken bond ends plus that in converted cells, and the largest
+   * in grip force over its largest magnitude (the same on every rank).
+   */
+  std::pair<double, double>
+  differences_from_rank_0_alone(const PeriArlequin::Simulator<2> &run, const std::string &text)
+  {
+    double counts = 0, forces = 0;
+    if (is_root())
+      {
+        auto serial = make_simulator<2>(text, MPI_COMM_SELF);
+        serial->run();
+        const auto &history   = run.get_energy_history();
+        const auto &reference = serial->get_energy_history();
+        counts = largest_column_difference(history, reference, {"broken_bonds"}, false) +
+                 std::abs(static_cast<double>(run.n_converted_cells()) -
+                          static_cast<double>(serial->n_converted_cells()));
+        forces = largest_column_difference(history, reference, {"reaction_boundary3_y"}, true);
+      }
+    return {Utilities::MPI::broadcast(MPI_COMM_WORLD, counts, 0),
+            Utilities::MPI::broadcast(MPI_COMM_WORLD, forces, 0)};
+  }
+
   void
   middle_tension()
   {
@@ -266,53 +290,22 @@ namespace
     // 5. All ranks against rank 0 alone.
     if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
       {
-        double bonds = 0, forces = 0;
-        if (is_root())
-          {
-            auto serial = make_simulator<2>(text, MPI_COMM_SELF);
-            serial->run();
-            bonds  = largest_column_difference(history,
-                                              serial->get_energy_history(),
-                                              {"broken_bonds"},
-                                              false);
-            forces = largest_column_difference(history,
-                                               serial->get_energy_history(),
-                                               {"reaction_boundary3_y"},
-                                               true);
-          }
-        check("broken bond ends, all ranks - rank 0 alone",
-              Utilities::MPI::max(bonds, MPI_COMM_WORLD),
-              0,
-              0);
-        check_below("grip force, all ranks - rank 0 alone, over the peak",
-                    Utilities::MPI::max(forces, MPI_COMM_WORLD),
-                    1e-4);
+        const auto [bonds, forces] = differences_from_rank_0_alone(*specimen, text);
+        check("broken bond ends, all ranks - rank 0 alone", bonds, 0, 0);
+        check_below("grip force, all ranks - rank 0 alone, over the peak", forces, 1e-4);
 
         // 8 on several ranks: the adaptive specimen, growing round by round.
-        auto adaptive = make_simulator<2>(adaptive_specimen_text(20));
+        const std::string adaptive_text = adaptive_specimen_text(20);
+        auto              adaptive      = make_simulator<2>(adaptive_text);
         adaptive->run();
-        double adaptive_counts = 0, adaptive_forces = 0;
-        if (is_root())
-          {
-            auto serial = make_simulator<2>(adaptive_specimen_text(20), MPI_COMM_SELF);
-            serial->run();
-            adaptive_counts = largest_column_difference(adaptive->get_energy_history(),
-                                                        serial->get_energy_history(),
-                                                        {"broken_bonds"},
-                                                        false) +
-                              std::abs(static_cast<double>(adaptive->n_converted_cells()) -
-                                       static_cast<double>(serial->n_converted_cells()));
-            adaptive_forces = largest_column_difference(adaptive->get_energy_history(),
-                                                        serial->get_energy_history(),
-                                                        {"reaction_boundary3_y"},
-                                                        true);
-          }
+        const auto [adaptive_counts, adaptive_forces] =
+          differences_from_rank_0_alone(*adaptive, adaptive_text);
         check("adaptive: broken bond ends and converted cells, all ranks - rank 0 alone",
-              Utilities::MPI::broadcast(MPI_COMM_WORLD, adaptive_counts, 0),
+              adaptive_counts,
               0,
               0);
         check_below("adaptive: grip force, all ranks - rank 0 alone, over the peak",
-                    Utilities::MPI::broadcast(MPI_COMM_WORLD, adaptive_forces, 0),
+                    adaptive_forces,
                     1e-4);
       }
   }
