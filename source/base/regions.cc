@@ -378,19 +378,25 @@ namespace PeriArlequin
 
   template <int dim>
   double
-  RegionDistance<dim>::distance(const Point<dim> &p) const
+  RegionDistance<dim>::distance(const Point<dim> &p, const double cap) const
   {
     if (bin_width == 0)
       return region.distance(p);
     std::array<int, dim> centre;
     int                  last_ring = 0;
+    // The gap to the grid, which holds every piece, bounds the distance from below.
+    double gap_squared = 0;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const int last = static_cast<int>(n_bins[d]) - 1;
-        centre[d] =
-          std::clamp(static_cast<int>(std::floor((p[d] - origin[d]) / bin_width)), 0, last);
-        last_ring = std::max({last_ring, centre[d], last - centre[d]});
+        const int    last    = static_cast<int>(n_bins[d]) - 1;
+        const double from    = p[d] - origin[d];
+        centre[d]            = std::clamp(static_cast<int>(std::floor(from / bin_width)), 0, last);
+        last_ring            = std::max({last_ring, centre[d], last - centre[d]});
+        const double outside = std::max({-from, from - n_bins[d] * bin_width, 0.});
+        gap_squared += outside * outside;
       }
+    if (gap_squared >= cap * cap)
+      return std::sqrt(gap_squared);
     // After ring r (the bins r bins from the point's bin, the nearest bin of the grid if the
     // point lies outside it), every piece not met is at least r bin widths away. A point far
     // from every piece would visit more bins than there are pieces: it scans them instead.
@@ -400,7 +406,8 @@ namespace PeriArlequin
       std::size_t i = 0;
       for (unsigned int d = dim; d-- > 0;)
         i = i * n_bins[d] + bin[d];
-      for (unsigned int b = bin_begin[i]; b < bin_begin[i + 1]; ++b)
+      // Inside a piece nothing is nearer (most particles of a zone lie inside one).
+      for (unsigned int b = bin_begin[i]; b < bin_begin[i + 1] && nearest > 0; ++b)
         nearest = std::min(nearest, region.piece_distance(bin_pieces[b], p));
       ++visited;
     };
@@ -431,7 +438,9 @@ namespace PeriArlequin
               if (!empty)
                 for_each_bin<dim>(lower, upper, visit);
             }
-        if (nearest <= r * bin_width)
+        // Every piece not met is at least r bin widths away: at or beyond the cap, so is the
+        // answer (nearest, if below r bin widths, was returned above).
+        if (nearest <= r * bin_width || r * bin_width >= cap)
           return nearest;
       }
     return nearest;

@@ -251,7 +251,9 @@ namespace PeriArlequin
   double
   BlendingField<dim>::value(const Point<dim> &x) const
   {
-    const double l1 = distance_to_pure_pd.distance(x);
+    // Beyond the band alpha is 1: the distance is needed up to its width only.
+    const double l1 = band_width > 0 ? distance_to_pure_pd.distance(x, band_width) :
+                                       distance_to_pure_pd.distance(x);
     if (l1 == 0)
       return 0.;
     const double l2 = band_width > 0 ? std::max(band_width - l1, 0.) : pure_fe.distance(x);
@@ -267,7 +269,7 @@ namespace PeriArlequin
   BlendingField<dim>::in_overlap(const Point<dim> &x) const
   {
     if (band_width > 0)
-      return distance_to_pure_pd.distance(x) <= band_width * (1. + 1e-12);
+      return distance_to_pure_pd.distance(x, 2. * band_width) <= band_width * (1. + 1e-12);
     return overlap_region.contains(x, 1e-12 * overlap_width(x));
   }
 
@@ -280,11 +282,11 @@ namespace PeriArlequin
 
   template <int dim>
   double
-  BlendingField<dim>::distance_to_pd_part(const Point<dim> &x) const
+  BlendingField<dim>::distance_to_pd_part(const Point<dim> &x, const double cap) const
   {
     if (band_width > 0)
-      return std::max(distance_to_pure_pd.distance(x) - band_width, 0.);
-    return std::min(distance_to_pure_pd.distance(x), overlap_region.distance(x));
+      return std::max(distance_to_pure_pd.distance(x, cap + band_width) - band_width, 0.);
+    return std::min(distance_to_pure_pd.distance(x, cap), overlap_region.distance(x));
   }
 
   template <int dim>

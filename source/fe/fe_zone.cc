@@ -89,8 +89,20 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone)
+  FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone, const CellPredicate &weights_changed)
   {
+    if (keeps_cell_integrals)
+      {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && weights_changed(cell))
+            kept_cell_integrals[cell->active_cell_index()].clear();
+      }
+    else
+      {
+        // The first growth integrates every cell and keeps the results for the next ones.
+        keeps_cell_integrals = true;
+        kept_cell_integrals.assign(triangulation.n_active_cells(), {});
+      }
     // The DoF indices, before and after, of the owned cells that stay FE: every owned DoF
     // after the change lies on one of them, and every DoF of theirs was locally relevant
     // before, so the old ghosted vectors hold the values to keep.
@@ -172,6 +184,7 @@ namespace PeriArlequin
   void
   FEZone<dim>::deserialize()
   {
+    forget_cell_integrals();
     std::vector<VectorType *> carried = carried_vectors();
     for (VectorType *v : carried)
       initialize_vector(*v);
@@ -192,6 +205,7 @@ namespace PeriArlequin
   FEZone<dim>::unpack_after_repartition()
   {
     Assert(solution_transfer, ExcMessage("Call prepare_for_repartition() first."));
+    forget_cell_integrals();
     distribute_and_assemble();
     std::vector<VectorType *> carried = carried_vectors();
     for (VectorType *v : carried)
@@ -199,6 +213,15 @@ namespace PeriArlequin
     solution_transfer->interpolate(carried);
     solution_transfer.reset();
     reset_after_dof_change();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::forget_cell_integrals()
+  {
+    // The active cell indices of a repartitioned mesh name other cells.
+    if (keeps_cell_integrals)
+      kept_cell_integrals.assign(triangulation.n_active_cells(), {});
   }
 
   template <int dim>
@@ -217,20 +240,13 @@ namespace PeriArlequin
   void
   FEZone<dim>::assemble_mass_and_stiffness()
   {
-    const double lambda = material.effective_lambda(dim);
-    const double mu     = material.shear_modulus();
-    const double rho    = material.density;
-
     hp::FEValues<dim>                    hp_fe_values(fe_collection,
                                    cell_quadrature,
                                    update_values | update_gradients | update_quadrature_points |
                                      update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_mass;
     std::vector<types::global_dof_index> dof_indices;
-    std::vector<SymmetricTensor<2, dim>> strain;
-    std::vector<double>                  divergence;
     AffineConstraints<double>            no_constraints;
     no_constraints.close();
     TrilinosWrappers::SparseMatrix stiffness;
@@ -240,35 +256,23 @@ namespace PeriArlequin
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
           continue;
-        hp_fe_values.reinit(cell);
-        const FEValues<dim> &fe_values     = hp_fe_values.get_present_fe_values();
-        const unsigned int   dofs_per_cell = fe_values.dofs_per_cell;
+        const unsigned int dofs_per_cell = cell->get_fe().n_dofs_per_cell();
         cell_matrix.reinit(dofs_per_cell, dofs_per_cell);
         cell_mass.reinit(dofs_per_cell);
-        strain.resize(dofs_per_cell);
-        divergence.resize(dofs_per_cell);
-
-        for (const unsigned int q : fe_values.quadrature_point_indices())
+        std::vector<double> *kept =
+          keeps_cell_integrals ? &kept_cell_integrals[cell->active_cell_index()] : nullptr;
+        if (kept && !kept->empty())
           {
-            const Point<dim> &x      = fe_values.quadrature_point(q);
-            const double      weight = stiffness_weight(x) * fe_values.JxW(q);
-            const double      m      = rho * mass_weight(x) * fe_values.JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
-                divergence[i] = trace(strain[i]);
-                // Row sum of the consistent mass: FE_Q shape functions sum to one.
-                cell_mass(i) += fe_values.shape_value(i, q) * m;
-              }
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = 0; j <= i; ++j)
-                cell_matrix(i, j) +=
-                  (lambda * divergence[i] * divergence[j] + 2. * mu * (strain[i] * strain[j])) *
-                  weight;
+            std::copy(kept->begin(), kept->begin() + cell_matrix.n_elements(), &cell_matrix(0, 0));
+            std::copy(kept->begin() + cell_matrix.n_elements(), kept->end(), cell_mass.begin());
           }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
+        else
+          integrate_cell(cell, hp_fe_values, cell_matrix, cell_mass);
+        if (kept && kept->empty())
+          {
+            kept->assign(&cell_matrix(0, 0), &cell_matrix(0, 0) + cell_matrix.n_elements());
+            kept->insert(kept->end(), cell_mass.begin(), cell_mass.end());
+          }
 
         dof_indices.resize(dofs_per_cell);
         cell->get_dof_indices(dof_indices);
@@ -292,12 +296,57 @@ namespace PeriArlequin
 
   template <int dim>
   void
+  FEZone<dim>::integrate_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                              hp::FEValues<dim>                                    &hp_fe_values,
+                              FullMatrix<double>                                   &cell_matrix,
+                              Vector<double>                                       &cell_mass) const
+  {
+    const double                         lambda = material.effective_lambda(dim);
+    const double                         mu     = material.shear_modulus();
+    const double                         rho    = material.density;
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain;
+    std::vector<double>                  divergence;
+    hp_fe_values.reinit(cell);
+    const FEValues<dim> &fe_values     = hp_fe_values.get_present_fe_values();
+    const unsigned int   dofs_per_cell = fe_values.dofs_per_cell;
+    strain.resize(dofs_per_cell);
+    divergence.resize(dofs_per_cell);
+
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<dim> &x      = fe_values.quadrature_point(q);
+        const double      weight = stiffness_weight(x) * fe_values.JxW(q);
+        const double      m      = rho * mass_weight(x) * fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
+            divergence[i] = trace(strain[i]);
+            // Row sum of the consistent mass: FE_Q shape functions sum to one.
+            cell_mass(i) += fe_values.shape_value(i, q) * m;
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) +=
+              (lambda * divergence[i] * divergence[j] + 2. * mu * (strain[i] * strain[j])) * weight;
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+  }
+
+  template <int dim>
+  void
   FEZone<dim>::support_points(std::vector<unsigned int> &local_dofs,
                               std::vector<Point<dim>>   &points,
                               std::vector<unsigned int> &components) const
   {
-    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> located;
-    std::vector<types::global_dof_index>                                   dof_indices;
+    // By owned index, so in the order of the global DoF numbers; a DoF seen from several
+    // cells takes the last one's point, as before.
+    const unsigned int                   n_owned = locally_owned_dofs.n_elements();
+    std::vector<Point<dim>>              located(n_owned);
+    std::vector<int>                     component(n_owned, -1);
+    std::vector<types::global_dof_index> dof_indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
@@ -305,20 +354,30 @@ namespace PeriArlequin
         const auto &unit = cell->get_fe().get_unit_support_points();
         dof_indices.resize(cell->get_fe().n_dofs_per_cell());
         cell->get_dof_indices(dof_indices);
+        // The components of a node share its support point: mapped once.
+        Point<dim> real;
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          if (locally_owned_dofs.is_element(dof_indices[i]))
-            located[dof_indices[i]] = {mapping.transform_unit_to_real_cell(cell, unit[i]),
-                                       cell->get_fe().system_to_component_index(i).first};
+          {
+            if (i == 0 || unit[i] != unit[i - 1])
+              real = mapping.transform_unit_to_real_cell(cell, unit[i]);
+            if (locally_owned_dofs.is_element(dof_indices[i]))
+              {
+                const unsigned int local = locally_owned_dofs.index_within_set(dof_indices[i]);
+                located[local]           = real;
+                component[local]         = cell->get_fe().system_to_component_index(i).first;
+              }
+          }
       }
     local_dofs.clear();
     points.clear();
     components.clear();
-    for (const auto &[dof, where] : located)
-      {
-        local_dofs.push_back(locally_owned_dofs.index_within_set(dof));
-        points.push_back(where.first);
-        components.push_back(where.second);
-      }
+    for (unsigned int local = 0; local < n_owned; ++local)
+      if (component[local] >= 0)
+        {
+          local_dofs.push_back(local);
+          points.push_back(located[local]);
+          components.push_back(component[local]);
+        }
   }
 
   template <int dim>

@@ -71,7 +71,7 @@ namespace PeriArlequin
         // Particles fill the PD region and the overlap, plus the slaves.
         const double reach = pd_parameters.coupled_particle_reach();
         extent             = [this, reach](const Point<dim> &x) {
-          return blending->distance_to_pd_part(x) <= reach;
+          return blending->distance_to_pd_part(x, 2. * reach) <= reach;
         };
       }
     pd_zone = std::make_unique<PDZone<dim>>(triangulation,

@@ -9,6 +9,8 @@
 // Tolerance: the search takes the least of the same per-box distances as
 // Region::distance(), so it must equal it to the bit (0); against the scan written here (its
 // own sum of squares and square root), 1e-15 relative (one rounding of the square root).
+// The search capped at 5 mm (as a blending weight asks, beyond the band alpha = 1): exact below
+// the cap, at least the cap beyond it; no point may be answered otherwise (0).
 
 #include <periarlequin/base/regions.h>
 
@@ -80,7 +82,9 @@ namespace
 
     const RegionDistance<dim> search(region);
     double                    differs_from_region = 0, differs_from_scan = 0;
-    unsigned int              inside = 0;
+    unsigned int              inside = 0, beyond_cap = 0, capped_wrong = 0;
+    // Two cells: the band of a blending field (beyond it alpha = 1).
+    const double cap = 5e-3;
     for (const auto &p : points)
       {
         double scan = std::numeric_limits<double>::infinity();
@@ -91,12 +95,18 @@ namespace
         differs_from_scan =
           std::max(differs_from_scan, std::abs(found - scan) / std::max(scan, 1e-300));
         inside += scan == 0;
+        // Below the cap the capped search is exact; at or beyond it, any number >= cap.
+        const double capped = search.distance(p, cap);
+        beyond_cap += scan >= cap;
+        capped_wrong += scan < cap ? capped != found : !(capped >= cap);
       }
     report(name + ": boxes", region.boxes.size());
     report(name + ": points", points.size());
     report(name + ": points inside", inside);
     check(name + ": |search - Region::distance| [m]", differs_from_region, 0, 0);
     check_below(name + ": |search - scan| / scan", differs_from_scan, 1e-15);
+    report(name + ": points at 5 mm or more", beyond_cap);
+    check(name + ": capped at 5 mm, points answered wrongly", capped_wrong, 0, 0);
   }
 } // namespace
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -144,9 +145,14 @@ namespace PeriArlequin
 
     explicit RegionDistance(const Region<dim> &region);
 
-    /** Euclidean distance from @p p to the nearest box or cell (0 inside; infinity if empty). */
+    /**
+     * Euclidean distance from @p p to the nearest box or cell (0 inside; infinity if empty).
+     * With @p cap, a distance of @p cap or more may come back as any number >= @p cap: the
+     * search stops there, so points far from the region (most of an FE mesh around a small PD
+     * zone, asked for a blending weight) cost a few bins; distances below @p cap are exact.
+     */
     double
-    distance(const Point<dim> &p) const;
+    distance(const Point<dim> &p, const double cap = std::numeric_limits<double>::infinity()) const;
 
   private:
     /** The region (its pieces are scanned where the grid does not help). */

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <limits>
 #include <string>
 
 namespace PeriArlequin
@@ -144,9 +145,13 @@ namespace PeriArlequin
     double
     overlap_width(const Point<dim> &x) const;
 
-    /** Distance from @p x to the part where alpha < 1 (PD region and overlap) [m]. */
+    /**
+     * Distance from @p x to the part where alpha < 1 (PD region and overlap) [m]; one of
+     * @p cap or more may come back as any number >= @p cap (RegionDistance::distance()).
+     */
     double
-    distance_to_pd_part(const Point<dim> &x) const;
+    distance_to_pd_part(const Point<dim> &x,
+                        const double      cap = std::numeric_limits<double>::infinity()) const;
 
     /** The pure PD region (alpha = 0). */
     const Region<dim> &
