@@ -129,16 +129,6 @@ namespace PeriArlequin
 
     template <int dim>
     void
-    PointBins<dim>::collect_near(const Box<dim> &box, std::vector<Point<dim>> &near) const
-    {
-      visit_near(box, [&](const Point<dim> &p) {
-        near.push_back(p);
-        return false;
-      });
-    }
-
-    template <int dim>
-    void
     mark_cells_near(const FEZone<dim>             &fe_zone,
                     const std::vector<Point<dim>> &points,
                     const double                   distance,
@@ -151,23 +141,6 @@ namespace PeriArlequin
         if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 &&
             bins.any_near(cell_box<dim>(cell)))
           convert[cell->active_cell_index()] = true;
-    }
-
-    template <int dim>
-    std::vector<Point<dim>>
-    points_near_cells(const FEZone<dim>             &fe_zone,
-                      const std::vector<Point<dim>> &points,
-                      const double                   distance,
-                      const std::vector<bool>       &cells)
-    {
-      std::vector<Point<dim>> near;
-      if (points.empty())
-        return near;
-      const PointBins<dim> bins(points, distance);
-      for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned() && cells[cell->active_cell_index()])
-          bins.collect_near(cell_box<dim>(cell), near);
-      return near;
     }
 
     template <int dim>
@@ -188,16 +161,6 @@ namespace PeriArlequin
 
     template class PointBins<2>;
     template class PointBins<3>;
-    template std::vector<Point<2>>
-    points_near_cells(const FEZone<2> &,
-                      const std::vector<Point<2>> &,
-                      const double,
-                      const std::vector<bool> &);
-    template std::vector<Point<3>>
-    points_near_cells(const FEZone<3> &,
-                      const std::vector<Point<3>> &,
-                      const double,
-                      const std::vector<bool> &);
     template void
     mark_cells_near(const FEZone<2> &,
                     const std::vector<Point<2>> &,

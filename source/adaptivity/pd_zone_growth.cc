@@ -60,15 +60,16 @@ namespace PeriArlequin
       entries.add("Lead distance",
                   lead_distance,
                   Patterns::Double(),
-                  "A growth caused by damage (the per-step trigger or a criterion's flag "
-                  "near damage) also converts the FE cells within this distance of the "
-                  "damage that caused it: the damaged particles within the conversion distance "
-                  "of a converting cell, which are the running crack tips (the crack faces "
-                  "behind them lie farther from the FE zone). The tips then run for several "
-                  "check intervals before the zone must grow again: fewer growths for a "
-                  "wider zone around the crack paths. 0 (the default): automatic, twice the "
-                  "conversion distance (trigger distance plus c_s dt Check interval); "
-                  "negative: no lead, a growth converts the flagged cells only [m].");
+                  "A growth also converts the FE cells within this distance of the running "
+                  "damage, the bonds broken since the previous growth: the running crack "
+                  "tips (crack faces further behind lie deep in the PD zone). All running "
+                  "tips take their lead in the same growth, so the tips of a branching crack "
+                  "or of several cracks share growths, and they run for several check "
+                  "intervals before the zone must grow again: fewer growths for a wider zone "
+                  "around the crack paths. Cells within the overlap width of the boundary "
+                  "are left to the damage. 0 (the default): automatic, twice the conversion "
+                  "distance (trigger distance plus c_s dt Check interval); negative: no "
+                  "lead, a growth converts the flagged cells only [m].");
     }
     template struct AdaptivePDZone<2>;
     template struct AdaptivePDZone<3>;
@@ -345,25 +346,21 @@ namespace PeriArlequin
                               const double       band_width,
                               std::vector<bool> &convert) const
   {
-    const MPI_Comm    communicator = pd_zone.get_communicator();
-    std::vector<bool> converting(convert.size(), false);
-    bool              any = false;
+    const MPI_Comm communicator = pd_zone.get_communicator();
+    bool           any          = false;
     for (const auto &cell : fe_zone.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && convert[cell->active_cell_index()] &&
           !pd_zone.contains_cell(cell))
-        converting[cell->active_cell_index()] = any = true;
+        any = true;
     if (!Utilities::MPI::logical_or(any, communicator))
       return;
-    // The running damage near the converting cells; a point near several cells once.
-    std::vector<Point<dim>> leading =
-      internal::points_near_cells(fe_zone,
-                                  gather_running_damage(communicator),
-                                  context.conversion_distance(),
-                                  converting);
-    sort_and_unique(leading);
+    // Every tip that ran since the previous growth takes its lead now, not only those that
+    // asked for this growth: the tips of a branching crack, or of several cracks, then share
+    // a growth instead of asking for one each. Crack faces that broke further behind the tips
+    // lie deep in the PD zone, with no FE cell within the lead.
     std::vector<bool> lead(convert.size(), false);
     internal::mark_cells_near(fe_zone,
-                              internal::gather_points(leading, communicator),
+                              gather_running_damage(communicator),
                               context.lead_distance,
                               lead);
     // Cells within the band width of the boundary are left to the damage: in PD the surface

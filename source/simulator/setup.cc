@@ -324,7 +324,7 @@ namespace PeriArlequin
               << growth.conversion_distance() << " m of the new damage (a crack at the shear "
               << "speed " << growth.crack_speed_bound << " m/s runs "
               << growth.crack_speed_bound * growth.time_step * growth.check_interval
-              << " m between two checks); a growth caused by damage converts the FE cells "
+              << " m between two checks); every growth also converts the FE cells "
               << "within " << growth.lead_distance
               << " m of the bonds broken since the previous one (the lead); new particles "
               << (growth.settling_time > 0 ? "settle over " : "do not settle");

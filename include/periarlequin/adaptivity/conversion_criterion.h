@@ -148,10 +148,6 @@ namespace PeriArlequin
       bool
       any_near(const Box<dim> &box) const;
 
-      /** Append the points closer than the distance to @p box to @p near. */
-      void
-      collect_near(const Box<dim> &box, std::vector<Point<dim>> &near) const;
-
     private:
       /**
        * Call @p visit(p) for the points closer than the distance to @p box until it returns
@@ -179,17 +175,6 @@ namespace PeriArlequin
                     const std::vector<Point<dim>> &points,
                     const double                   distance,
                     std::vector<bool>             &convert);
-
-    /**
-     * The points of @p points (the points of all ranks) within @p distance of a locally
-     * owned cell whose entry in @p cells is set (one entry per active cell).
-     */
-    template <int dim>
-    std::vector<Point<dim>>
-    points_near_cells(const FEZone<dim>             &fe_zone,
-                      const std::vector<Point<dim>> &points,
-                      const double                   distance,
-                      const std::vector<bool>       &cells);
 
     /** The points of all ranks in one list, in rank order (collective). */
     template <int dim>

@@ -57,11 +57,10 @@ namespace PeriArlequin
    * at once, out to the conversion distance (GrowthContext). The overlap stop of the PD zone
    * stays as the last guard.
    *
-   * A growth caused by damage also converts the FE cells within the lead distance of the
-   * running damage that caused it (bonds broken since the last growth, within the
-   * conversion distance of a cell that converts: the running crack tips, not a pre-crack or
-   * the crack faces behind the tips), so that the tips get room for several check intervals
-   * and the zone grows less often. The lead stops a band width short of the boundary: a
+   * A growth also converts the FE cells within the lead distance of the running damage (the
+   * bonds broken since the last growth: the running crack tips, not a pre-crack or old crack
+   * faces), so that every running tip gets room for several check intervals at once and the
+   * zone grows less often. The lead stops a band width short of the boundary: a
    * growth that no damage asks for does not put the PD surface layer of an edge in or next
    * to the band.
    */
@@ -186,9 +185,9 @@ namespace PeriArlequin
                   std::vector<Point<dim>> new_damage,
                   const double            band_width) const;
     /**
-     * Flag in @p convert the FE cells within the lead distance of the running damage that
-     * lies within the conversion distance of a cell that converts (flagged and not PD yet),
-     * except those nearer than @p band_width to the boundary (collective).
+     * If a cell converts (flagged and not PD yet): flag in @p convert the FE cells within the
+     * lead distance of the running damage, except those nearer than @p band_width to the
+     * boundary (collective).
      */
     void
     add_lead(const FEZone<dim> &fe_zone,
