@@ -461,10 +461,7 @@ namespace PeriArlequin
                                                           a.begin() + pd_zone.n_owned_particles());
 
     phase.emplace(timer, "growth: FE zone");
-    // alpha changed where the converted cells are nearer than the band width.
-    const double band = blending.overlap_width(Point<dim>());
-    fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); },
-                        [&](const auto &cell) { return near_flagged(cell, band * (1. + 1e-9)); });
+    fe_zone.restrict_to([&](const auto &cell) { return !pd_zone.contains_cell(cell); });
     phase.emplace(timer, "growth: coupling and accelerations");
     rebuild_coupling();
     phase.reset();

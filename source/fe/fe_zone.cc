@@ -89,20 +89,8 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone, const CellPredicate &weights_changed)
+  FEZone<dim>::restrict_to(const CellPredicate &in_fe_zone)
   {
-    if (keeps_cell_integrals)
-      {
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned() && weights_changed(cell))
-            kept_cell_integrals[cell->active_cell_index()].clear();
-      }
-    else
-      {
-        // The first growth integrates every cell and keeps the results for the next ones.
-        keeps_cell_integrals = true;
-        kept_cell_integrals.assign(triangulation.n_active_cells(), {});
-      }
     // The DoF indices, before and after, of the owned cells that stay FE: every owned DoF
     // after the change lies on one of them, and every DoF of theirs was locally relevant
     // before, so the old ghosted vectors hold the values to keep.
@@ -184,7 +172,6 @@ namespace PeriArlequin
   void
   FEZone<dim>::deserialize()
   {
-    forget_cell_integrals();
     std::vector<VectorType *> carried = carried_vectors();
     for (VectorType *v : carried)
       initialize_vector(*v);
@@ -205,7 +192,6 @@ namespace PeriArlequin
   FEZone<dim>::unpack_after_repartition()
   {
     Assert(solution_transfer, ExcMessage("Call prepare_for_repartition() first."));
-    forget_cell_integrals();
     distribute_and_assemble();
     std::vector<VectorType *> carried = carried_vectors();
     for (VectorType *v : carried)
@@ -213,15 +199,6 @@ namespace PeriArlequin
     solution_transfer->interpolate(carried);
     solution_transfer.reset();
     reset_after_dof_change();
-  }
-
-  template <int dim>
-  void
-  FEZone<dim>::forget_cell_integrals()
-  {
-    // The active cell indices of a repartitioned mesh name other cells.
-    if (keeps_cell_integrals)
-      kept_cell_integrals.assign(triangulation.n_active_cells(), {});
   }
 
   template <int dim>
@@ -240,13 +217,20 @@ namespace PeriArlequin
   void
   FEZone<dim>::assemble_mass_and_stiffness()
   {
+    const double lambda = material.effective_lambda(dim);
+    const double mu     = material.shear_modulus();
+    const double rho    = material.density;
+
     hp::FEValues<dim>                    hp_fe_values(fe_collection,
                                    cell_quadrature,
                                    update_values | update_gradients | update_quadrature_points |
                                      update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_mass;
     std::vector<types::global_dof_index> dof_indices;
+    std::vector<SymmetricTensor<2, dim>> strain;
+    std::vector<double>                  divergence;
     AffineConstraints<double>            no_constraints;
     no_constraints.close();
     TrilinosWrappers::SparseMatrix stiffness;
@@ -256,23 +240,35 @@ namespace PeriArlequin
       {
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
           continue;
-        const unsigned int dofs_per_cell = cell->get_fe().n_dofs_per_cell();
+        hp_fe_values.reinit(cell);
+        const FEValues<dim> &fe_values     = hp_fe_values.get_present_fe_values();
+        const unsigned int   dofs_per_cell = fe_values.dofs_per_cell;
         cell_matrix.reinit(dofs_per_cell, dofs_per_cell);
         cell_mass.reinit(dofs_per_cell);
-        std::vector<double> *kept =
-          keeps_cell_integrals ? &kept_cell_integrals[cell->active_cell_index()] : nullptr;
-        if (kept && !kept->empty())
+        strain.resize(dofs_per_cell);
+        divergence.resize(dofs_per_cell);
+
+        for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            std::copy(kept->begin(), kept->begin() + cell_matrix.n_elements(), &cell_matrix(0, 0));
-            std::copy(kept->begin() + cell_matrix.n_elements(), kept->end(), cell_mass.begin());
+            const Point<dim> &x      = fe_values.quadrature_point(q);
+            const double      weight = stiffness_weight(x) * fe_values.JxW(q);
+            const double      m      = rho * mass_weight(x) * fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
+                divergence[i] = trace(strain[i]);
+                // Row sum of the consistent mass: FE_Q shape functions sum to one.
+                cell_mass(i) += fe_values.shape_value(i, q) * m;
+              }
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) +=
+                  (lambda * divergence[i] * divergence[j] + 2. * mu * (strain[i] * strain[j])) *
+                  weight;
           }
-        else
-          integrate_cell(cell, hp_fe_values, cell_matrix, cell_mass);
-        if (kept && kept->empty())
-          {
-            kept->assign(&cell_matrix(0, 0), &cell_matrix(0, 0) + cell_matrix.n_elements());
-            kept->insert(kept->end(), cell_mass.begin(), cell_mass.end());
-          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
 
         dof_indices.resize(dofs_per_cell);
         cell->get_dof_indices(dof_indices);
@@ -292,47 +288,6 @@ namespace PeriArlequin
                              std::to_string(mass.local_element(i)) +
                              "): the blending weight alpha must be positive somewhere on the "
                              "support of every FE node."));
-  }
-
-  template <int dim>
-  void
-  FEZone<dim>::integrate_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                              hp::FEValues<dim>                                    &hp_fe_values,
-                              FullMatrix<double>                                   &cell_matrix,
-                              Vector<double>                                       &cell_mass) const
-  {
-    const double                         lambda = material.effective_lambda(dim);
-    const double                         mu     = material.shear_modulus();
-    const double                         rho    = material.density;
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> strain;
-    std::vector<double>                  divergence;
-    hp_fe_values.reinit(cell);
-    const FEValues<dim> &fe_values     = hp_fe_values.get_present_fe_values();
-    const unsigned int   dofs_per_cell = fe_values.dofs_per_cell;
-    strain.resize(dofs_per_cell);
-    divergence.resize(dofs_per_cell);
-
-    for (const unsigned int q : fe_values.quadrature_point_indices())
-      {
-        const Point<dim> &x      = fe_values.quadrature_point(q);
-        const double      weight = stiffness_weight(x) * fe_values.JxW(q);
-        const double      m      = rho * mass_weight(x) * fe_values.JxW(q);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            strain[i]     = fe_values[displacement].symmetric_gradient(i, q);
-            divergence[i] = trace(strain[i]);
-            // Row sum of the consistent mass: FE_Q shape functions sum to one.
-            cell_mass(i) += fe_values.shape_value(i, q) * m;
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) +=
-              (lambda * divergence[i] * divergence[j] + 2. * mu * (strain[i] * strain[j])) * weight;
-      }
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-        cell_matrix(i, j) = cell_matrix(j, i);
   }
 
   template <int dim>

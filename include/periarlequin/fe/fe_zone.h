@@ -14,12 +14,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/hp/fe_collection.h>
-#include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/q_collection.h>
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <functional>
 #include <memory>
@@ -89,13 +86,9 @@ namespace PeriArlequin
      * their values at the remaining nodes, as a solution transfer across the hp change does
      * for nodal elements. The prescribed DoFs are found again and the work done so far is
      * kept. Nodal force weights and contact must be set again by their owners.
-     *
-     * Only the cells that @p weights_changed accepts are integrated again: every other cell
-     * keeps the stiffness matrix and lumped mass it had (kept from the assembly before, from
-     * the first call on; the same numbers, so the result is that of a full assembly).
      */
     void
-    restrict_to(const CellPredicate &in_fe_zone, const CellPredicate &weights_changed);
+    restrict_to(const CellPredicate &in_fe_zone);
 
     /**
      * Before Triangulation::repartition(): attach the displacement, velocity, acceleration and
@@ -345,15 +338,6 @@ namespace PeriArlequin
     reset_after_dof_change();
     void
     assemble_mass_and_stiffness();
-    /** The stiffness matrix K_alpha and the lumped mass of one cell (zeroed on entry). */
-    void
-    integrate_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                   hp::FEValues<dim>                                    &hp_fe_values,
-                   FullMatrix<double>                                   &cell_matrix,
-                   Vector<double>                                       &cell_mass) const;
-    /** Drop the kept cell integrals (the cells changed owners). */
-    void
-    forget_cell_integrals();
 
     const parallel::distributed::Triangulation<dim> &triangulation;
     const Parameters::Material                       material;
@@ -372,14 +356,7 @@ namespace PeriArlequin
     std::vector<unsigned char> owned_dof_component;
     WeightFunction             mass_weight, stiffness_weight;
     /** The cells that carry FE_Q (the others carry FE_Nothing). */
-    CellPredicate fe_cells;
-    /**
-     * Once restrict_to() was called (a growing PD zone): each owned FE cell's stiffness
-     * matrix, then its lumped mass, by active cell index; an empty entry is integrated at the
-     * next assembly. Cleared when the cells change owners.
-     */
-    std::vector<std::vector<double>> kept_cell_integrals;
-    bool                             keeps_cell_integrals = false;
+    CellPredicate                                                             fe_cells;
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>> solution_transfer;
 
     const ProblemData<dim> *problem_data = nullptr;
