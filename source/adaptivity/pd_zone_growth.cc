@@ -425,21 +425,20 @@ namespace PeriArlequin
     // The particles of the grown zone (the reach of the set-up); the new ones take the FE
     // field, which still lives in the converted cells.
     // The extent grew within the band and the particle reach of the converted cells only.
-    const double                reach = blending.overlap_width(Point<dim>()) + particle_reach;
-    const std::vector<Box<dim>> flagged_bounds = flagged.piece_bounds();
-    const auto                  near_flagged   = [&](const auto &cell, const double distance) {
-      const auto     corners = cell->bounding_box().get_boundary_points();
-      const Box<dim> cell_box{corners.first, corners.second};
-      for (const Box<dim> &bounds : flagged_bounds)
-        if (cell_box.gap(bounds).norm() <= distance)
-          return true;
-      return false;
-    };
-    const std::vector<unsigned int> previous = pd_zone.extend(
+    const double                    reach = blending.overlap_width(Point<dim>()) + particle_reach;
+    const std::vector<Box<dim>>     flagged_bounds = flagged.piece_bounds();
+    const std::vector<unsigned int> previous       = pd_zone.extend(
       [&](const Point<dim> &x) {
         return blending.distance_to_pd_part(x, 2. * particle_reach) <= particle_reach;
       },
-      [&](const auto &cell) { return near_flagged(cell, reach * (1. + 1e-12)); });
+      [&](const auto &cell) {
+        const auto     corners = cell->bounding_box().get_boundary_points();
+        const Box<dim> cell_box{corners.first, corners.second};
+        for (const Box<dim> &bounds : flagged_bounds)
+          if (cell_box.gap(bounds).norm() <= reach * (1. + 1e-12))
+            return true;
+        return false;
+      });
     std::vector<unsigned int> added;
     for (unsigned int i = 0; i < previous.size(); ++i)
       if (previous[i] == numbers::invalid_unsigned_int)
