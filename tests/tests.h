@@ -365,6 +365,33 @@ namespace PeriArlequinTests
     return worst;
   }
 
+  /**
+   * @p run, a finished run of the case @p parameters on all ranks, against the same case run
+   * here on rank 0 alone (MPI_COMM_SELF): the largest absolute difference over the columns
+   * @p counts and the largest relative one (over each column's largest magnitude) over
+   * @p values; the same on every rank.
+   */
+  template <int dim>
+  std::pair<double, double>
+  differences_from_rank_0_alone(const PeriArlequin::Simulator<dim> &run,
+                                const std::string                  &parameters,
+                                const std::vector<std::string>     &counts,
+                                const std::vector<std::string>     &values)
+  {
+    double count_difference = 0, value_difference = 0;
+    if (is_root())
+      {
+        auto serial = make_simulator<dim>(parameters, MPI_COMM_SELF);
+        serial->run();
+        const auto &history   = run.get_energy_history();
+        const auto &reference = serial->get_energy_history();
+        count_difference      = largest_column_difference(history, reference, counts, false);
+        value_difference      = largest_column_difference(history, reference, values, true);
+      }
+    return {Utilities::MPI::broadcast(MPI_COMM_WORLD, count_difference, 0),
+            Utilities::MPI::broadcast(MPI_COMM_WORLD, value_difference, 0)};
+  }
+
   /** That the finished run @p simulator changed column @p column (the case is not vacuous). */
   template <int dim>
   void
