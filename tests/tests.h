@@ -12,6 +12,8 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_out.h>
+#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +84,25 @@ namespace PeriArlequinTests
   }
 
   /**
+   * Parameter text of a quasi-static run (Time/Integration = quasi-static, load increments of
+   * 1 s to @p end_time, static solves to 1e-5) in the deterministic test mode, recording the
+   * energies and the support reactions; @p time_step is that of the case's explicit
+   * estimates.
+   */
+  inline std::string
+  quasi_static_controls(const double time_step, const double end_time)
+  {
+    std::ostringstream text;
+    text << "subsection Time\n  set Integration = quasi-static\n  set Time step = " << time_step
+         << "\n  set End time = " << end_time << "\nend\n"
+         << "subsection Static solve\n  set Tolerance = 1e-5\n  set Load step = 1\nend\n"
+         << quiet_output()
+         << "subsection Postprocess\n  set List of postprocessors = energies, support "
+            "reactions\nend\n";
+    return text.str();
+  }
+
+  /**
    * A pure PD block of 1 mm lattice spacing (2D: 20 mm square, 3D: 10 mm cube) with a
    * pre-crack from the left side to the middle, displaced at rest by a smooth random-looking
    * field of strain about 1e-2; @p model is the two-dimensional model (2D; empty: default).
@@ -118,6 +139,22 @@ namespace PeriArlequinTests
   is_root()
   {
     return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
+  /** Write @p triangulation as a Gmsh file @p file_name on rank 0; every rank waits for it. */
+  template <int dim>
+  void
+  write_gmsh_on_root(const Triangulation<dim> &triangulation, const std::string &file_name)
+  {
+    if (is_root())
+      {
+        GridOut writer;
+        writer.set_flags(GridOutFlags::Msh(true));
+        std::ofstream file(file_name);
+        file.precision(16);
+        writer.write_msh(triangulation, file);
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 
   /** Stop a test that compares several ranks with one when run on one rank. */

@@ -107,14 +107,19 @@ for run in $middle_tension_runs; do
     "$run/solution_energy.csv"
 done
 
-plots=""
-for run in $middle_tension_runs; do
-  plots="$plots${plots:+, }'$run/load_displacement.dat' using 1:2 with linespoints title '$run'"
-done
-[ -z "$plots" ] || gnuplot -e "set terminal pngcairo size 800,550 noenhanced;
-  set output 'load_displacement.png'; set key top left;
-  set xlabel 'grip displacement [um]'; set ylabel 'grip force / LEFM failure load';
-  set yrange [0:1.2]; plot $plots"
+# The curves <run>/<data> of the runs <runs> into <figure>: plot_curves data figure xlabel ylabel runs...
+plot_curves() {
+  local data=$1 figure=$2 xlabel=$3 ylabel=$4 plots="" run
+  shift 4
+  for run in "$@"; do
+    plots="$plots${plots:+, }'$run/$data' using 1:2 with linespoints title '$run'"
+  done
+  [ -z "$plots" ] || gnuplot -e "set terminal pngcairo size 800,550 noenhanced;
+    set output '$figure'; set key top left; set xlabel '$xlabel'; set ylabel '$ylabel';
+    set yrange [0:1.2]; plot $plots"
+}
+plot_curves load_displacement.dat load_displacement.png 'grip displacement [um]' \
+  'grip force / LEFM failure load' $middle_tension_runs
 
 # The beam: the LEFM load of a crack a deep, P(a) = K_Ic W^{3/2} / (S f(a / W)), f of ASTM
 # E399 for S / W = 4; P_c = P(25 mm).
@@ -146,12 +151,6 @@ for run in $bending_runs; do
                  first / pc, peak / pc, 1e6 * upeak / 8.82, growing_at_peak, 1e3 * extension,
                  f / lefm(0.025 + extension), its, s }' "$run/solution_energy.csv"
 done
-plots=""
-for run in $bending_runs; do
-  plots="$plots${plots:+, }'$run/load_deflection.dat' using 1:2 with linespoints title '$run'"
-done
-[ -z "$plots" ] || gnuplot -e "set terminal pngcairo size 800,550 noenhanced;
-  set output 'bending.png'; set key top left;
-  set xlabel 'punch deflection / LEFM failure deflection'; set ylabel 'punch force / LEFM failure load';
-  set yrange [0:1.2]; plot $plots"
+plot_curves load_deflection.dat bending.png 'punch deflection / LEFM failure deflection' \
+  'punch force / LEFM failure load' $bending_runs
 echo "wrote the runs, the tables' histories and the figures to $work"

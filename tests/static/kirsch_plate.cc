@@ -33,13 +33,11 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "../tests.h"
@@ -55,36 +53,28 @@ namespace
   /** Harmonics of the fit: u_r = sum A_n cos(2 n theta), u_theta = sum B_n sin(2 n theta). */
   constexpr unsigned int n_harmonics = 5;
 
-  /** Write the plate's mesh, @p refinements times refined on its curved hole, on rank 0. */
+  /** Write the plate's mesh, @p refinements times refined on its curved hole (rank 0 writes). */
   void
   write_mesh(const std::string &file_name, const unsigned int refinements)
   {
-    if (is_root())
-      {
-        Triangulation<2> plate;
-        const double     pad_x = 0.5 * length - square_half_side;
-        const double     pad_y = 0.5 * width - square_half_side;
-        GridGenerator::plate_with_a_hole(plate,
-                                         radius,
-                                         square_half_side,
-                                         pad_y,
-                                         pad_y,
-                                         pad_x,
-                                         pad_x,
-                                         centre,
-                                         0,
-                                         1,
-                                         1.,
-                                         2,
-                                         true);
-        plate.refine_global(refinements);
-        GridOut writer;
-        writer.set_flags(GridOutFlags::Msh(true));
-        std::ofstream file(file_name);
-        file.precision(16);
-        writer.write_msh(plate, file);
-      }
-    MPI_Barrier(MPI_COMM_WORLD);
+    Triangulation<2> plate;
+    const double     pad_x = 0.5 * length - square_half_side;
+    const double     pad_y = 0.5 * width - square_half_side;
+    GridGenerator::plate_with_a_hole(plate,
+                                     radius,
+                                     square_half_side,
+                                     pad_y,
+                                     pad_y,
+                                     pad_x,
+                                     pad_x,
+                                     centre,
+                                     0,
+                                     1,
+                                     1.,
+                                     2,
+                                     true);
+    plate.refine_global(refinements);
+    write_gmsh_on_root(plate, file_name);
   }
 
   std::string

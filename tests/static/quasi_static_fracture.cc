@@ -98,13 +98,7 @@ namespace
            << "\n    set Type = displacement\n    set Components = y\n"
            << "    subsection Function\n      set Function expression = 0; " << (id == 2 ? "-" : "")
            << motion.str() << "\n    end\n  end\n";
-    text << "end\n"
-         << "subsection Time\n  set Integration = quasi-static\n  set Time step = 1e-8\n"
-         << "  set End time = " << end_time << "\nend\n"
-         << "subsection Static solve\n  set Tolerance = 1e-5\n  set Load step = 1\nend\n"
-         << quiet_output()
-         << "subsection Postprocess\n  set List of postprocessors = energies, support "
-            "reactions\nend\n";
+    text << "end\n" << quasi_static_controls(1e-8, end_time);
     return text.str();
   }
 

@@ -36,11 +36,9 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "../tests.h"
@@ -70,52 +68,44 @@ namespace
   }
 
   /**
-   * Write the beam's mesh on rank 0: cells of 2.5 mm but a column of 0.5 mm over each support;
-   * boundary ids 0 and 1 the support faces, 2 the punch's faces at mid-span on top, 4 the rest.
+   * Write the beam's mesh (rank 0 writes): cells of 2.5 mm but a column of 0.5 mm over each
+   * support; boundary ids 0 and 1 the support faces, 2 the punch's faces at mid-span on top,
+   * 4 the rest.
    */
   void
   write_mesh(const std::string &file_name)
   {
-    if (is_root())
+    // The nodes every cell along x, each support's node split into two half a face apart.
+    std::vector<double> nodes;
+    for (unsigned int i = 0; i <= std::round(length / cell); ++i)
       {
-        // The nodes every cell along x, each support's node split into two half a face apart.
-        std::vector<double> nodes;
-        for (unsigned int i = 0; i <= std::round(length / cell); ++i)
-          {
-            const double x = i * cell;
-            if (std::abs(x - first_support) < 1e-9 || std::abs(x - first_support - span) < 1e-9)
-              nodes.insert(nodes.end(), {x - 0.5 * support_face, x + 0.5 * support_face});
-            else
-              nodes.push_back(x);
-          }
-        std::vector<std::vector<double>> steps(2);
-        for (unsigned int i = 1; i < nodes.size(); ++i)
-          steps[0].push_back(nodes[i] - nodes[i - 1]);
-        steps[1].assign(static_cast<unsigned int>(std::round(depth / cell)), cell);
-        Triangulation<2> beam;
-        GridGenerator::subdivided_hyper_rectangle(beam, steps, Point<2>(), Point<2>(length, depth));
-        for (const auto &face : beam.active_face_iterators())
-          if (face->at_boundary())
-            {
-              const Point<2>     centre = face->center();
-              types::boundary_id id     = 4;
-              if (std::abs(centre[1]) < 1e-9 && std::abs(centre[0] - first_support) < 1e-9)
-                id = 0;
-              else if (std::abs(centre[1]) < 1e-9 &&
-                       std::abs(centre[0] - first_support - span) < 1e-9)
-                id = 1;
-              else if (std::abs(centre[1] - depth) < 1e-9 &&
-                       std::abs(centre[0] - mid_span) < punch_half_width)
-                id = 2;
-              face->set_boundary_id(id);
-            }
-        GridOut writer;
-        writer.set_flags(GridOutFlags::Msh(true));
-        std::ofstream file(file_name);
-        file.precision(16);
-        writer.write_msh(beam, file);
+        const double x = i * cell;
+        if (std::abs(x - first_support) < 1e-9 || std::abs(x - first_support - span) < 1e-9)
+          nodes.insert(nodes.end(), {x - 0.5 * support_face, x + 0.5 * support_face});
+        else
+          nodes.push_back(x);
       }
-    MPI_Barrier(MPI_COMM_WORLD);
+    std::vector<std::vector<double>> steps(2);
+    for (unsigned int i = 1; i < nodes.size(); ++i)
+      steps[0].push_back(nodes[i] - nodes[i - 1]);
+    steps[1].assign(static_cast<unsigned int>(std::round(depth / cell)), cell);
+    Triangulation<2> beam;
+    GridGenerator::subdivided_hyper_rectangle(beam, steps, Point<2>(), Point<2>(length, depth));
+    for (const auto &face : beam.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const Point<2>     centre = face->center();
+          types::boundary_id id     = 4;
+          if (std::abs(centre[1]) < 1e-9 && std::abs(centre[0] - first_support) < 1e-9)
+            id = 0;
+          else if (std::abs(centre[1]) < 1e-9 && std::abs(centre[0] - first_support - span) < 1e-9)
+            id = 1;
+          else if (std::abs(centre[1] - depth) < 1e-9 &&
+                   std::abs(centre[0] - mid_span) < punch_half_width)
+            id = 2;
+          face->set_boundary_id(id);
+        }
+    write_gmsh_on_root(beam, file_name);
   }
 
   /** The beam with a notch of depth @p a, the punch moved down by @p motion(t), to @p end. */
@@ -143,12 +133,7 @@ namespace
          << "  subsection Boundary 2\n    set Type = displacement\n    set Components = y\n"
          << "    subsection Function\n      set Function expression = 0; -(" << motion
          << ")\n    end\n  end\nend\n"
-         << "subsection Time\n  set Integration = quasi-static\n  set Time step = 5e-8\n"
-         << "  set End time = " << end_time << "\nend\n"
-         << "subsection Static solve\n  set Tolerance = 1e-5\n  set Load step = 1\nend\n"
-         << quiet_output()
-         << "subsection Postprocess\n  set List of postprocessors = energies, support "
-            "reactions\nend\n";
+         << quasi_static_controls(5e-8, end_time);
     return text.str();
   }
 
