@@ -10,7 +10,8 @@
 # minutes for branching, 50 for kink, 2 for impact, 1 for spall and 1 for gmsh on one core;
 # 3d: the 3D plate of plate_3d.prm (1.1 million particles in pure PD, 2 GB) as pure PD and
 # adaptive from PD around the notch (the default band of two FE cells, 5 mm, and a band of
-# 10 mm), each once, on <mpi ranks> ranks of one thread (two ranks: about 10 minutes); prints
+# 10 mm; RUNS_3D selects among pd, damage_distance and band_10mm), each once, on <mpi ranks>
+# ranks of one thread (two ranks: about 10 minutes); prints
 # the table of the README and draws the damage maps. impact: the impact-driven
 # mode II plate of impact_mode_ii.prm as pure PD and adaptive (default adaptive settings; with
 # the strain criterion added; checked every 50 steps), one thread each, one after the other;
@@ -225,7 +226,7 @@ for part in $parts; do
     3d)
       mkdir -p "$work/3d"
       cd "$work/3d"
-      runs="pd damage_distance band_10mm"
+      runs="${RUNS_3D:-pd damage_distance band_10mm}"
       for run in $runs; do
         {
           echo "include $here/plate_3d.prm"
