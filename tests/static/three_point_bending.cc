@@ -16,7 +16,7 @@
  *    polynomial of ASTM E399, within 0.5 % of the exact solution), G = K^2 / E. Tolerance
  *    6 % of G: the punch spreads the load over 5 mm (the mid-span moment 1.3 % below P S / 4,
  *    G 2.5 % below), the supports are faces, not points, and the PD crack's tip lies within
- *    dx / 2 of a; measured -3.5 %. (Supports of two faces, 5 mm, held the beam's rotation
+ *    dx / 2 of a; measured -3.6 %. (Supports of two faces, 5 mm, held the beam's rotation
  *    there: G came out 19 % low.)
  * 2. Initiation: load increments of 2 % of the LEFM failure load, from 98 %; the first bonds
  *    beyond the notch break when the coupled model's energy release rate (the compliance
@@ -24,7 +24,7 @@
  *    10 % of G: the lattice starts the crack when the tip bonds reach the critical stretch,
  *    not at the continuum's G; the pure PD middle-tension specimen of quasi_static_fracture
  *    starts its crack at 1.01 G0 by the same measure (0.962 of its LEFM load, its compliance
- *    slope 9 % above its LEFM calibration); measured 0.97.
+ *    slope 9 % above its LEFM calibration); measured 0.96.
  * 3. On 2 ranks: the fracture run breaks the same bonds at the same increments as on rank 0
  *    alone, and its punch force agrees within 1e-4 of its largest value (the ranks sum in
  *    another order; the solves stop within their tolerance 1e-5).
