@@ -96,24 +96,41 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  void
-  CrackTipField<dim>::vector_value(const Point<dim> &p, Vector<double> &values) const
+  Tensor<1, dim>
+  CrackTipField<dim>::spatial_field(const Point<dim> &p) const
   {
     // Polar coordinates in the crack's frame.
     const double c = std::cos(direction), s = std::sin(direction);
     const double dx = p[0] - tip[0], dy = p[1] - tip[1];
     const double x = c * dx + s * dy, y = -s * dx + c * dy;
     const double r = std::sqrt(x * x + y * y), theta = std::atan2(y, x);
-    const auto [K_I, K_II] = stress_intensity_factors(this->get_time());
-    const double scale     = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
+    const double K_I = std::cos(phase_angle), K_II = std::sin(phase_angle);
+    const double scale = std::sqrt(r / (2. * numbers::PI)) / (2. * shear_modulus);
     const double ch = std::cos(theta / 2), sh = std::sin(theta / 2);
     const double ux =
       scale * (K_I * ch * (kappa - 1. + 2. * sh * sh) + K_II * sh * (kappa + 1. + 2. * ch * ch));
     const double uy =
       scale * (K_I * sh * (kappa + 1. - 2. * ch * ch) - K_II * ch * (kappa - 1. - 2. * sh * sh));
-    values    = 0.;
-    values(0) = c * ux - s * uy;
-    values(1) = s * ux + c * uy;
+    Tensor<1, dim> field;
+    field[0] = c * ux - s * uy;
+    field[1] = s * ux + c * uy;
+    return field;
+  }
+
+  template <int dim>
+  double
+  CrackTipField<dim>::time_factor(const double t) const
+  {
+    return stress_intensity_factor.value(Point<1>(t));
+  }
+
+  template <int dim>
+  void
+  CrackTipField<dim>::vector_value(const Point<dim> &p, Vector<double> &values) const
+  {
+    const Tensor<1, dim> field = time_factor(this->get_time()) * spatial_field(p);
+    for (unsigned int d = 0; d < dim; ++d)
+      values(d) = field[d];
   }
 
   template <int dim>
@@ -129,7 +146,7 @@ namespace PeriArlequin
   std::array<double, 2>
   CrackTipField<dim>::stress_intensity_factors(const double t) const
   {
-    const double K = stress_intensity_factor.value(Point<1>(t));
+    const double K = time_factor(t);
     return {{K * std::cos(phase_angle), K * std::sin(phase_angle)}};
   }
 

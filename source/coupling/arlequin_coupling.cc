@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/coupling/arlequin_coupling.h>
 
 #include <cmath>
@@ -145,8 +146,10 @@ namespace PeriArlequin
   {
     x.update_ghost_values();
     overlap.vmult(overlap_values, x);
-    for (unsigned int r = 0; r < overlap_particles.size(); ++r)
-      overlap_values[r] -= y[overlap_particles[r]];
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        overlap_values[r] -= y[overlap_particles[r]];
+    });
     space->apply_transpose_h(overlap_values, g);
   }
 
@@ -190,17 +193,23 @@ namespace PeriArlequin
     space->apply_h(lambda, overlap_values);
     overlap.Tvmult(fe_scratch, overlap_values);
     const double dt = time_step;
-    for (unsigned int i = 0; i < fe_scratch.locally_owned_size(); ++i)
-      {
-        const double correction = fe_inverse_mass.local_element(i) * fe_scratch.local_element(i);
-        fe_zone->correct_motion(i, -(dt * correction), -correction);
-      }
-    for (unsigned int r = 0; r < overlap_particles.size(); ++r)
-      {
-        const unsigned int   i          = overlap_particles[r];
-        const Tensor<1, dim> correction = pd_inverse_mass[r] * overlap_values[r];
-        pd_zone->correct_motion(i, dt * correction, correction);
-      }
+    for_each_subrange(fe_scratch.locally_owned_size(),
+                      [&](const unsigned int first, const unsigned int end) {
+                        for (unsigned int i = first; i < end; ++i)
+                          {
+                            const double correction =
+                              fe_inverse_mass.local_element(i) * fe_scratch.local_element(i);
+                            fe_zone->correct_motion(i, -(dt * correction), -correction);
+                          }
+                      });
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        {
+          const unsigned int   i          = overlap_particles[r];
+          const Tensor<1, dim> correction = pd_inverse_mass[r] * overlap_values[r];
+          pd_zone->correct_motion(i, dt * correction, correction);
+        }
+    });
   }
 
   template <int dim>

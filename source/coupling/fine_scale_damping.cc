@@ -57,13 +57,15 @@ namespace PeriArlequin
     fe_state.velocity.update_ghost_values();
     if (integration == Parameters::DampingIntegration::half_step)
       {
-        for (unsigned int r = 0; r < particles.size(); ++r)
-          {
-            const unsigned int i = particles[r];
-            pd_zone.add_to_acceleration(i,
-                                        -coefficient[r] *
-                                          (v[i] - overlap.interpolate(fe_state.velocity, r)));
-          }
+        overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+          for (unsigned int r = first; r < end; ++r)
+            {
+              const unsigned int i = particles[r];
+              pd_zone.add_to_acceleration(i,
+                                          -coefficient[r] *
+                                            (v[i] - overlap.interpolate(fe_state.velocity, r)));
+            }
+        });
         return;
       }
     // The corrector will set w = w_half + dt/2 a. With the damping force at that velocity,
@@ -73,16 +75,18 @@ namespace PeriArlequin
     // multipliers, like the PD side).
     fe_state.acceleration.update_ghost_values();
     const double half_step = 0.5 * time_step;
-    for (unsigned int r = 0; r < particles.size(); ++r)
-      {
-        const unsigned int   i = particles[r];
-        const Tensor<1, dim> fine_velocity =
-          v[i] + half_step * a[i] - overlap.interpolate(fe_state.velocity, r) -
-          half_step * overlap.interpolate(fe_state.acceleration, r);
-        pd_zone.add_to_acceleration(i,
-                                    -(coefficient[r] / (1. + half_step * coefficient[r])) *
-                                      fine_velocity);
-      }
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        {
+          const unsigned int   i = particles[r];
+          const Tensor<1, dim> fine_velocity =
+            v[i] + half_step * a[i] - overlap.interpolate(fe_state.velocity, r) -
+            half_step * overlap.interpolate(fe_state.acceleration, r);
+          pd_zone.add_to_acceleration(i,
+                                      -(coefficient[r] / (1. + half_step * coefficient[r])) *
+                                        fine_velocity);
+        }
+    });
   }
 
   template class FineScaleDamping<2>;

@@ -64,6 +64,14 @@ namespace PeriArlequin
             entries.push_back(entry);
         row_begin.push_back(entries.size());
       }
+
+    std::vector<typename TransposedRows<dim>::Term> terms;
+    terms.reserve(dim * entries.size());
+    for (unsigned int r = 0; r < n_rows(); ++r)
+      for (const Entry &entry : row(r))
+        for (unsigned int d = 0; d < dim; ++d)
+          terms.push_back({r, d, entry.dofs[d], entry.value});
+    transpose.reinit(terms, partitioner.locally_owned_size() + partitioner.n_ghost_indices());
   }
 
   template <int dim>
@@ -89,8 +97,10 @@ namespace PeriArlequin
   InterpolationOperator<dim>::vmult(Values &values, const VectorType &x) const
   {
     values.resize(n_rows());
-    for (unsigned int r = 0; r < n_rows(); ++r)
-      values[r] = interpolate(x, r);
+    for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        values[r] = interpolate(x, r);
+    });
   }
 
   template <int dim>
@@ -105,10 +115,7 @@ namespace PeriArlequin
   void
   InterpolationOperator<dim>::Tvmult_add(VectorType &x, const Values &values) const
   {
-    for (unsigned int r = 0; r < n_rows(); ++r)
-      for (const Entry &entry : row(r))
-        for (unsigned int d = 0; d < dim; ++d)
-          x.local_element(entry.dofs[d]) += entry.value * values[r][d];
+    transpose.add_to(x, values);
     x.compress(VectorOperation::add);
   }
 

@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/coupling/multiplier_solver.h>
 
 #include <deal.II/lac/solver_cg.h>
@@ -107,8 +108,10 @@ namespace PeriArlequin
     fe_scratch.scale(fe_inverse_mass);
     fe_scratch.update_ghost_values();
     overlap.vmult(overlap_values_2, fe_scratch);
-    for (unsigned int r = 0; r < overlap.n_rows(); ++r)
-      overlap_values_2[r] += pd_inverse_mass[r] * overlap_values[r];
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        overlap_values_2[r] += pd_inverse_mass[r] * overlap_values[r];
+    });
     space.apply_transpose_h(overlap_values_2, y);
     y *= time_step;
   }
@@ -138,9 +141,14 @@ namespace PeriArlequin
     iterations = 0;
     if (method == Parameters::MultiplierSolver::diagonal && !exact_on_request)
       {
-        for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
-          lambda.local_element(m) =
-            free_rows.local_element(m) > 0 ? rhs.local_element(m) / row_sums.local_element(m) : 0.;
+        for_each_subrange(lambda.locally_owned_size(),
+                          [&](const unsigned int first, const unsigned int end) {
+                            for (unsigned int m = first; m < end; ++m)
+                              lambda.local_element(m) =
+                                free_rows.local_element(m) > 0 ?
+                                  rhs.local_element(m) / row_sums.local_element(m) :
+                                  0.;
+                          });
         return;
       }
     free_rhs = rhs;

@@ -39,18 +39,22 @@ namespace PeriArlequin
   StrictMultiplierSpace<dim>::apply_h(const VectorType &lambda, Values &p)
   {
     p.resize(overlap.n_rows());
-    for (unsigned int r = 0; r < overlap.n_rows(); ++r)
-      for (unsigned int d = 0; d < dim; ++d)
-        p[r][d] = lambda.local_element(dim * r + d);
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        for (unsigned int d = 0; d < dim; ++d)
+          p[r][d] = lambda.local_element(dim * r + d);
+    });
   }
 
   template <int dim>
   void
   StrictMultiplierSpace<dim>::apply_transpose_h(const Values &s, VectorType &y)
   {
-    for (unsigned int r = 0; r < overlap.n_rows(); ++r)
-      for (unsigned int d = 0; d < dim; ++d)
-        y.local_element(dim * r + d) = s[r][d];
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        for (unsigned int d = 0; d < dim; ++d)
+          y.local_element(dim * r + d) = s[r][d];
+    });
   }
 
   template <int dim>
@@ -266,6 +270,14 @@ namespace PeriArlequin
     for (unsigned int e = 0; e < row_nodes.size(); ++e)
       entries.push_back(
         {ghosted_partitioner.global_to_local(dim * number(row_nodes[e])), row_values[e]});
+    std::vector<typename TransposedRows<dim>::Term> terms;
+    for (unsigned int r = 0; r + 1 < row_begin.size(); ++r)
+      for (unsigned int e = row_begin[r]; e < row_begin[r + 1]; ++e)
+        for (unsigned int d = 0; d < dim; ++d)
+          terms.push_back({r, d, entries[e].node + d, entries[e].value});
+    transpose.reinit(terms,
+                     ghosted_partitioner.locally_owned_size() +
+                       ghosted_partitioner.n_ghost_indices());
 
     // Colours: nodes of one colour are stride cells apart in some direction, farther than
     // twice the reach of a multiplier (its hat, H, and the FE cells there, h <= H).
@@ -293,10 +305,12 @@ namespace PeriArlequin
       ghosted.local_element(m) = lambda.local_element(m);
     ghosted.update_ghost_values();
     p.assign(row_begin.size() - 1, Tensor<1, dim>());
-    for (unsigned int r = 0; r + 1 < row_begin.size(); ++r)
-      for (unsigned int e = row_begin[r]; e < row_begin[r + 1]; ++e)
-        for (unsigned int d = 0; d < dim; ++d)
-          p[r][d] += entries[e].value * ghosted.local_element(entries[e].node + d);
+    overlap.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        for (unsigned int e = row_begin[r]; e < row_begin[r + 1]; ++e)
+          for (unsigned int d = 0; d < dim; ++d)
+            p[r][d] += entries[e].value * ghosted.local_element(entries[e].node + d);
+    });
   }
 
   template <int dim>
@@ -304,10 +318,7 @@ namespace PeriArlequin
   GridMultiplierSpace<dim>::evaluate_transpose(const Values &s, VectorType &y) const
   {
     ghosted = 0.;
-    for (unsigned int r = 0; r + 1 < row_begin.size(); ++r)
-      for (unsigned int e = row_begin[r]; e < row_begin[r + 1]; ++e)
-        for (unsigned int d = 0; d < dim; ++d)
-          ghosted.local_element(entries[e].node + d) += entries[e].value * s[r][d];
+    transpose.add_to(ghosted, s);
     ghosted.compress(VectorOperation::add);
     for (unsigned int m = 0; m < y.locally_owned_size(); ++m)
       y.local_element(m) = ghosted.local_element(m);

@@ -30,8 +30,10 @@ namespace PeriArlequin
   {
     const VectorType &u = fe_zone->get_state().displacement;
     u.update_ghost_values();
-    for (unsigned int r = 0; r < particles.size(); ++r)
-      pd_zone->set_displacement(particles[r], interpolation.interpolate(u, r));
+    interpolation.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        pd_zone->set_displacement(particles[r], interpolation.interpolate(u, r));
+    });
   }
 
   template <int dim>
@@ -41,18 +43,22 @@ namespace PeriArlequin
     const auto &state = fe_zone->get_state();
     state.velocity.update_ghost_values();
     state.acceleration.update_ghost_values();
-    for (unsigned int r = 0; r < particles.size(); ++r)
-      pd_zone->set_velocity_and_acceleration(particles[r],
-                                             interpolation.interpolate(state.velocity, r),
-                                             interpolation.interpolate(state.acceleration, r));
+    interpolation.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        pd_zone->set_velocity_and_acceleration(particles[r],
+                                               interpolation.interpolate(state.velocity, r),
+                                               interpolation.interpolate(state.acceleration, r));
+    });
   }
 
   template <int dim>
   void
   SlaveLayer<dim>::add_forces(VectorType &force)
   {
-    for (unsigned int r = 0; r < particles.size(); ++r)
-      forces[r] = pd_zone->blended_force(particles[r]);
+    interpolation.for_each_row_range([&](const unsigned int first, const unsigned int end) {
+      for (unsigned int r = first; r < end; ++r)
+        forces[r] = pd_zone->blended_force(particles[r]);
+    });
     interpolation.Tvmult(scratch, forces);
     force.add(1., scratch);
   }

@@ -516,7 +516,14 @@ namespace PeriArlequin
       }
     std::vector<PrescribedDoF> result;
     for (const auto &entry : found)
-      result.push_back(entry.second);
+      {
+        PrescribedDoF dof = entry.second;
+        dof.separable     = dynamic_cast<const SeparableField<dim> *>(
+          data.boundary_conditions[dof.boundary_id].function.get());
+        if (dof.separable)
+          dof.spatial_value = dof.separable->spatial_field(dof.location)[dof.component];
+        result.push_back(dof);
+      }
     return result;
   }
 

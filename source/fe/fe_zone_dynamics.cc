@@ -1,5 +1,6 @@
 // FEZone: the state and its velocity-Verlet parts (eq. 58-61), prescribed boundary motion and
 // the work of loads and support reactions. Assembly and operators are in fe_zone.cc.
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/fe/fe_zone.h>
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -89,15 +90,18 @@ namespace PeriArlequin
     const double dt = time_step;
     prescribed_velocity.resize(prescribed.size());
     prescribed_acceleration.resize(prescribed.size());
+    TimeFactors<dim> time_factors(t, dt);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         const auto &dof      = prescribed[k];
         auto       &function = *problem_data->boundary_conditions[dof.boundary_id].function;
-        const auto  value    = [&](const double at) {
+        const auto  value    = [&](const double at, const unsigned int which) {
+          if (dof.separable)
+            return time_factors(*dof.separable)[which] * dof.spatial_value;
           function.set_time(at);
           return function.value(dof.location, dof.component);
         };
-        const double before = value(t - dt), now = value(t), after = value(t + dt);
+        const double before = value(t - dt, 0), now = value(t, 1), after = value(t + dt, 2);
         prescribed_velocity[k]                            = (after - before) / (2. * dt);
         prescribed_acceleration[k]                        = (after - 2. * now + before) / (dt * dt);
         state.displacement.local_element(dof.local_index) = now;
@@ -112,8 +116,11 @@ namespace PeriArlequin
   {
     compute_internal_force(state.displacement, internal_force);
     if (!nodal_force_weights.empty())
-      for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
-        internal_force.local_element(i) *= nodal_force_weights[i];
+      for_each_subrange(internal_force.locally_owned_size(),
+                        [&](const unsigned int first, const unsigned int end) {
+                          for (unsigned int i = first; i < end; ++i)
+                            internal_force.local_element(i) *= nodal_force_weights[i];
+                        });
     interface_force = 0.;
     compute_external_force(*problem_data, t, applied_force);
   }
@@ -143,11 +150,14 @@ namespace PeriArlequin
   void
   FEZone<dim>::compute_accelerations(const double)
   {
-    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      state.acceleration.local_element(i) =
-        (applied_force.local_element(i) - internal_force.local_element(i) +
-         interface_force.local_element(i)) /
-        mass.local_element(i);
+    for_each_subrange(mass.locally_owned_size(),
+                      [&](const unsigned int first, const unsigned int end) {
+                        for (unsigned int i = first; i < end; ++i)
+                          state.acceleration.local_element(i) =
+                            (applied_force.local_element(i) - internal_force.local_element(i) +
+                             interface_force.local_element(i)) /
+                            mass.local_element(i);
+                      });
     if (contact)
       contact->enforce(time_step,
                        mass,

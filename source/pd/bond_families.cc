@@ -61,12 +61,10 @@ namespace PeriArlequin
   std::size_t
   BondFamilies<dim>::n_broken_bond_ends() const
   {
-    std::size_t ends = 0;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-        if (state[n] == broken)
-          ends += neighbor_is_owned(i, n) ? 2 : 1;
-    return ends;
+    return sum_over_broken_bonds<std::size_t>(
+      [&](const unsigned int i, const std::size_t n) -> std::size_t {
+        return neighbor_is_owned(i, n) ? 2 : 1;
+      });
   }
 
   template <int dim>
@@ -97,60 +95,73 @@ namespace PeriArlequin
   std::vector<std::pair<unsigned int, double>>
   BondFamilies<dim>::damaged_particles() const
   {
-    std::vector<std::pair<unsigned int, double>> damaged;
     if (!stencil_active)
       {
-        const std::vector<double> all = damage();
+        std::vector<std::pair<unsigned int, double>> damaged;
+        const std::vector<double>                    all = damage();
         for (unsigned int i = 0; i < n_owned; ++i)
           if (all[i] > 0)
             damaged.emplace_back(i, all[i]);
         return damaged;
       }
-    std::vector<std::uint8_t> has_broken(n_owned, 0);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-        if (state[n] == broken)
-          {
-            has_broken[i] = 1;
-            if (const unsigned int j = neighbor(i, n); j < n_owned)
-              has_broken[j] = 1;
-          }
+    // On the threads: a chunk marks its own particles with a broken bond and lists the
+    // owned other ends of those bonds (few), marked after.
+    std::vector<std::uint8_t>       has_broken(n_owned, 0);
+    const std::vector<unsigned int> other_ends = join_over_chunks<unsigned int>(
+      n_owned,
+      [&](const unsigned int first, const unsigned int end, std::vector<unsigned int> &ends) {
+        for (unsigned int i = first; i < end; ++i)
+          for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+            if (state[n] == broken)
+              {
+                has_broken[i] = 1;
+                if (const unsigned int j = neighbor(i, n); j < n_owned)
+                  ends.push_back(j);
+              }
+      });
+    for (const unsigned int j : other_ends)
+      has_broken[j] = 1;
     // damage() adds to a particle the bonds stored at the owned particles below it first, in
     // their order, then its own family: the same order here gives the same bits. The stencil
     // is symmetric and in lexicographic order, so the entry opposite k is size - 1 - k.
-    const unsigned int                                  n_entries = stencil.size();
-    std::vector<std::pair<unsigned int, std::uint16_t>> lower;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (has_broken[i])
-        {
-          lower.clear();
-          for (unsigned int k = 0; k < n_entries; ++k)
-            if (const unsigned int j = layout.neighbor(i, k); j < i)
-              lower.emplace_back(j, static_cast<std::uint16_t>(n_entries - 1 - k));
-          std::sort(lower.begin(), lower.end());
-          double all = 0, kept = 0;
-          for (const auto &[j, k] : lower)
+    const unsigned int n_entries = stencil.size();
+    return join_over_chunks<std::pair<unsigned int, double>>(
+      n_owned,
+      [&](const unsigned int                            first,
+          const unsigned int                            end,
+          std::vector<std::pair<unsigned int, double>> &damaged) {
+        std::vector<std::pair<unsigned int, std::uint16_t>> lower;
+        for (unsigned int i = first; i < end; ++i)
+          if (has_broken[i])
             {
-              const auto first = stencil_index.begin() + family_begin[j];
-              const auto found =
-                std::lower_bound(first, stencil_index.begin() + family_begin[j + 1], k);
-              const std::size_t n = found - stencil_index.begin();
-              Assert(n < family_begin[j + 1] && stencil_index[n] == k && neighbor(j, n) == i,
-                     ExcMessage("A bond to a particle below is not stored at that particle."));
-              const double v = stencil[k].volume;
-              all += v;
-              kept += state[n] != broken ? v : 0.;
+              lower.clear();
+              for (unsigned int k = 0; k < n_entries; ++k)
+                if (const unsigned int j = layout.neighbor(i, k); j < i)
+                  lower.emplace_back(j, static_cast<std::uint16_t>(n_entries - 1 - k));
+              std::sort(lower.begin(), lower.end());
+              double all = 0, kept = 0;
+              for (const auto &[j, k] : lower)
+                {
+                  const auto first = stencil_index.begin() + family_begin[j];
+                  const auto found =
+                    std::lower_bound(first, stencil_index.begin() + family_begin[j + 1], k);
+                  const std::size_t n = found - stencil_index.begin();
+                  Assert(n < family_begin[j + 1] && stencil_index[n] == k && neighbor(j, n) == i,
+                         ExcMessage("A bond to a particle below is not stored at that particle."));
+                  const double v = stencil[k].volume;
+                  all += v;
+                  kept += state[n] != broken ? v : 0.;
+                }
+              for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+                {
+                  const double v = stencil[stencil_index[n]].volume;
+                  all += v;
+                  kept += state[n] != broken ? v : 0.;
+                }
+              if (all > 0 && 1. - kept / all > 0)
+                damaged.emplace_back(i, 1. - kept / all);
             }
-          for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-            {
-              const double v = stencil[stencil_index[n]].volume;
-              all += v;
-              kept += state[n] != broken ? v : 0.;
-            }
-          if (all > 0 && 1. - kept / all > 0)
-            damaged.emplace_back(i, 1. - kept / all);
-        }
-    return damaged;
+      });
   }
 
   namespace

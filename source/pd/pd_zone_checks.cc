@@ -76,17 +76,26 @@ namespace PeriArlequin
 
   template <int dim>
   void
-  PDZone<dim>::check_damage_near_overlap(const double time) const
+  PDZone<dim>::check_damage_near_overlap(const double                   time,
+                                         const std::vector<StoredBond> &broken) const
   {
     const auto            ids   = ghosts.ids();
     types::particle_index first = std::numeric_limits<types::particle_index>::max();
     unsigned int          local = 0;
-    for (const auto &[i, n] : bonds_near_overlap)
-      if (bonds.state[n] == BondFamilies<dim>::broken && ids[i] < first)
-        {
-          first = ids[i];
-          local = i;
-        }
+    for (const StoredBond &bond : broken)
+      {
+        const auto watched =
+          std::lower_bound(bonds_near_overlap.begin(),
+                           bonds_near_overlap.end(),
+                           bond.index,
+                           [](const auto &entry, const std::size_t n) { return entry.second < n; });
+        if (watched != bonds_near_overlap.end() && watched->second == bond.index &&
+            ids[watched->first] < first)
+          {
+            first = ids[watched->first];
+            local = watched->first;
+          }
+      }
     const types::particle_index global_first = Utilities::MPI::min(first, communicator);
     if (global_first == std::numeric_limits<types::particle_index>::max())
       return;

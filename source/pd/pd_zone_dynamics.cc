@@ -125,10 +125,10 @@ namespace PeriArlequin
     // which then see the broken bonds; a criterion that reads the scalars gets them for these
     // displacements, and they stay current for the forces unless a bond broke on some rank
     // (a ghost's scalars change with bonds its own rank breaks).
-    bool scalars_current = false;
+    bool                    scalars_current = false;
+    std::vector<StoredBond> broken;
     if (fracture && !fracture_suspended)
       {
-        std::vector<StoredBond> broken;
         if (fracture->critical_stretch() > 0)
           {
             broken = model->compute_particle_scalars_breaking(bonds,
@@ -159,7 +159,7 @@ namespace PeriArlequin
           }
       }
     if (checks_overlap)
-      check_damage_near_overlap(time);
+      check_damage_near_overlap(time, broken);
     evaluate_model(scalars_current);
   }
 
@@ -343,11 +343,16 @@ namespace PeriArlequin
     if (!tracks_work)
       return;
     // Trapezoidal work of the applied forces over the interval.
-    const auto u         = state.displacements();
-    double     increment = 0;
-    for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-      increment +=
-        (previous_applied_force[i] + applied_force[i]) * (u[i] - previous_displacement[i]);
+    const auto   u = state.displacements();
+    const double increment =
+      sum_over_chunks<double>(ghosts.n_owned(),
+                              [&](const unsigned int first, const unsigned int end) {
+                                double sum = 0;
+                                for (unsigned int i = first; i < end; ++i)
+                                  sum += (previous_applied_force[i] + applied_force[i]) *
+                                         (u[i] - previous_displacement[i]);
+                                return sum;
+                              });
     work += 0.5 * increment;
   }
 

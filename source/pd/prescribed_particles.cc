@@ -24,14 +24,12 @@ namespace PeriArlequin
             std::array<bool, dim> components;
             for (unsigned int d = 0; d < dim; ++d)
               components[d] = region.components[d];
-            particles.push_back({i,
-                                 region.function.get(),
-                                 components,
-                                 region.prescribes_velocity,
-                                 positions[i],
-                                 Tensor<1, dim>(),
-                                 Tensor<1, dim>(),
-                                 2 * dim + r});
+            particles.push_back(make_particle(i,
+                                              region.function.get(),
+                                              components,
+                                              region.prescribes_velocity,
+                                              positions[i],
+                                              2 * dim + r));
             is_prescribed[i] = true;
             break;
           }
@@ -47,9 +45,30 @@ namespace PeriArlequin
   {
     if (is_prescribed[i])
       return;
-    particles.push_back(
-      {i, &function, components, false, position, Tensor<1, dim>(), Tensor<1, dim>(), boundary_id});
+    particles.push_back(make_particle(i, &function, components, false, position, boundary_id));
     is_prescribed[i] = true;
+  }
+
+  template <int dim>
+  typename PrescribedParticles<dim>::Particle
+  PrescribedParticles<dim>::make_particle(const unsigned int           local_index,
+                                          Function<dim>               *function,
+                                          const std::array<bool, dim> &components,
+                                          const bool                   prescribes_velocity,
+                                          const Point<dim>            &position,
+                                          const unsigned int           support)
+  {
+    const auto *separable = dynamic_cast<const SeparableField<dim> *>(function);
+    return {local_index,
+            function,
+            components,
+            prescribes_velocity,
+            position,
+            Tensor<1, dim>(),
+            Tensor<1, dim>(),
+            support,
+            separable,
+            separable ? separable->spatial_field(position) : Tensor<1, dim>()};
   }
 
   template <int dim>
@@ -70,17 +89,30 @@ namespace PeriArlequin
   void
   PrescribedParticles<dim>::impose(const double time, const double dt, ParticleState<dim> &state)
   {
-    Vector<double> before(dim), now(dim), after(dim);
+    Vector<double>   before(dim), now(dim), after(dim);
+    TimeFactors<dim> time_factors(time, dt);
     for (auto &p : particles)
       {
-        auto             &function = *p.function;
-        const Point<dim> &x        = p.position;
-        function.set_time(time - dt);
-        function.vector_value(x, before);
-        function.set_time(time);
-        function.vector_value(x, now);
-        function.set_time(time + dt);
-        function.vector_value(x, after);
+        if (p.separable)
+          {
+            const std::array<double, 3> &g = time_factors(*p.separable);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                before(d) = g[0] * p.spatial_field[d];
+                now(d)    = g[1] * p.spatial_field[d];
+                after(d)  = g[2] * p.spatial_field[d];
+              }
+          }
+        else
+          {
+            auto &function = *p.function;
+            function.set_time(time - dt);
+            function.vector_value(p.position, before);
+            function.set_time(time);
+            function.vector_value(p.position, now);
+            function.set_time(time + dt);
+            function.vector_value(p.position, after);
+          }
         for (unsigned int d = 0; d < dim; ++d)
           {
             if (!p.components[d])

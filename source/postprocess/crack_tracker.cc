@@ -373,14 +373,11 @@ namespace PeriArlequin
     per_unit_area /= std::pow(lattice_spacing, dim);
 
     // A bond to a ghost is stored on both ranks that own one of its ends: half on each.
-    double broken = 0;
-    for (unsigned int i = 0; i < bonds.n_owned; ++i)
-      for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
-        if (bonds.state[n] == BondFamilies<dim>::broken)
-          {
-            const auto &entry = bonds.stencil[bonds.stencil_index[n]];
-            broken += (bonds.neighbor_is_owned(i, n) ? 1. : 0.5) * entry.length * entry.volume;
-          }
+    const double broken =
+      bonds.template sum_over_broken_bonds<double>([&](const unsigned int i, const std::size_t n) {
+        const auto &entry = bonds.stencil[bonds.stencil_index[n]];
+        return (bonds.neighbor_is_owned(i, n) ? 1. : 0.5) * entry.length * entry.volume;
+      });
     return Utilities::MPI::sum(broken, communicator) / per_unit_area;
   }
 

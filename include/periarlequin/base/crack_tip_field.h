@@ -2,6 +2,7 @@
 #define periarlequin_base_crack_tip_field_h
 
 #include <periarlequin/base/parameters.h>
+#include <periarlequin/base/separable_field.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
@@ -30,7 +31,9 @@ namespace PeriArlequin
    * an expression of the time and psi the phase angle.
    */
   template <int dim>
-  class CrackTipField : public Function<dim>
+  class CrackTipField
+    : public Function<dim>
+    , public SeparableField<dim>
   {
   public:
     /** The entries of "Boundary conditions/Crack tip field", as given (angles in degrees). */
@@ -69,6 +72,14 @@ namespace PeriArlequin
     vector_value(const Point<dim> &p, Vector<double> &values) const override;
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /** K(t) [Pa m^(1/2)]. */
+    double
+    time_factor(const double t) const override;
+
+    /** The field at K = 1 [m / (Pa m^(1/2))]. */
+    Tensor<1, dim>
+    spatial_field(const Point<dim> &p) const override;
 
     /** K_I and K_II at time @p t [Pa m^(1/2)]. */
     std::array<double, 2>

@@ -1,6 +1,8 @@
 #ifndef periarlequin_coupling_interpolation_operator_h
 #define periarlequin_coupling_interpolation_operator_h
 
+#include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/coupling/transposed_rows.h>
 #include <periarlequin/fe/fe_zone.h>
 #include <periarlequin/pd/pd_zone.h>
 
@@ -60,6 +62,18 @@ namespace PeriArlequin
       return row_begin.size() - 1;
     }
 
+    /**
+     * Call @p work(first, end) on subranges of the rows on the threads of this rank: for
+     * loops whose rows are independent (each writes its own particle).
+     */
+    template <typename Work>
+    void
+    for_each_row_range(const Work &work) const
+    {
+      // A row costs a few dozen flops: a few hundred rows keep a task worth its start.
+      for_each_subrange(n_rows(), work, 512);
+    }
+
     /** The non-zero entries of row @p row. */
     ArrayView<const Entry>
     row(const unsigned int row) const;
@@ -68,11 +82,11 @@ namespace PeriArlequin
     Tensor<1, dim>
     interpolate(const VectorType &x, const unsigned int row) const;
 
-    /** values = N x; @p x must have its ghost values. */
+    /** values = N x, on the threads; @p x must have its ghost values. */
     void
     vmult(Values &values, const VectorType &x) const;
 
-    /** x = N^T values (owned entries, compressed). */
+    /** x = N^T values (owned entries, compressed), on the threads. */
     void
     Tvmult(VectorType &x, const Values &values) const;
 
@@ -83,6 +97,8 @@ namespace PeriArlequin
   private:
     std::vector<unsigned int> row_begin = {0};
     std::vector<Entry>        entries;
+    /** N^T by columns, for the product on the threads. */
+    TransposedRows<dim> transpose;
   };
 } // namespace PeriArlequin
 

@@ -2,6 +2,7 @@
 #define periarlequin_coupling_multiplier_space_h
 
 #include <periarlequin/coupling/interpolation_operator.h>
+#include <periarlequin/coupling/transposed_rows.h>
 
 #include <array>
 #include <limits>
@@ -171,6 +172,8 @@ namespace PeriArlequin
     const FEZone<dim>                &fe_zone;
     std::vector<unsigned int>         row_begin = {0};
     std::vector<Entry>                entries;
+    /** H^T by columns, for the product on the threads. */
+    TransposedRows<dim> transpose;
     /** Colour of each owned grid node (0 to stride^dim - 1). */
     std::vector<unsigned int> colours;
     unsigned int              n_colours = 1;

@@ -3,6 +3,7 @@
 
 #include <periarlequin/base/parameters.h>
 #include <periarlequin/base/problem_data.h>
+#include <periarlequin/base/separable_field.h>
 #include <periarlequin/fe/contact.h>
 #include <periarlequin/fe/owned_rows_matrix.h>
 #include <periarlequin/time/integrated_zone.h>
@@ -51,6 +52,9 @@ namespace PeriArlequin
       unsigned int component;
       unsigned int boundary_id;
       Point<dim>   location;
+      /** The boundary's function as a SeparableField (or nullptr), and its spatial value here. */
+      const SeparableField<dim> *separable     = nullptr;
+      double                     spatial_value = 0;
     };
 
     /** Nodal displacement, velocity and acceleration (owned and ghost DoFs). */

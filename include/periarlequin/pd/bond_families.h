@@ -1,6 +1,7 @@
 #ifndef periarlequin_pd_bond_families_h
 #define periarlequin_pd_bond_families_h
 
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/base/regions.h>
 #include <periarlequin/pd/ghost_exchange.h>
 #include <periarlequin/pd/lattice.h>
@@ -227,6 +228,24 @@ namespace PeriArlequin
     /** Bond ends at owned particles whose bond is broken. */
     std::size_t
     n_broken_bond_ends() const;
+    /**
+     * The sum of @p term(i, n) over the broken bonds n stored at owned particles i, on the
+     * threads of this rank in fixed chunks of particles: the sum does not depend on the
+     * number of threads.
+     */
+    template <typename T, typename Term>
+    T
+    sum_over_broken_bonds(const Term &term) const
+    {
+      return sum_over_chunks<T>(n_owned, [&](const unsigned int first, const unsigned int end) {
+        T sum = T();
+        for (unsigned int i = first; i < end; ++i)
+          for (std::size_t n = family_begin[i]; n < family_begin[i + 1]; ++n)
+            if (state[n] == broken)
+              sum += term(i, n);
+        return sum;
+      });
+    }
     /** Damage 1 - (intact bond volume)/(initial bond volume) of every owned particle. */
     std::vector<double>
     damage() const;

@@ -587,9 +587,13 @@ namespace PeriArlequin
      */
     void
     find_bonds_near_overlap();
-    /** Stop with a message naming @p time and the place if a bond near the overlap broke. */
+    /**
+     * Stop with a message naming @p time and the place if one of the bonds @p broken (those
+     * that broke in this step) is near the overlap: the watched bonds were intact when they
+     * were found, so only the new breaks need a look.
+     */
     void
-    check_damage_near_overlap(const double time) const;
+    check_damage_near_overlap(const double time, const std::vector<StoredBond> &broken) const;
     /** Body force plus boundary tractions per unit volume on owned particle @p i [N/m^dim]. */
     Tensor<1, dim>
     load_density(const unsigned int i, const double time) const;
@@ -689,7 +693,10 @@ namespace PeriArlequin
     /** Weight of the settling force of owned particle @p i at @p time (1 at its start). */
     double
     settling_weight(const unsigned int i, const double time) const;
-    /** (particle next to the overlap, stored bond index) of the bonds watched for damage. */
+    /**
+     * (particle next to the overlap, stored bond index) of the bonds watched for damage, in
+     * the order of their stored indices.
+     */
     std::vector<std::pair<unsigned int, std::size_t>> bonds_near_overlap;
     bool                                              checks_overlap = false;
     /**

@@ -1,6 +1,7 @@
 #ifndef periarlequin_pd_prescribed_particles_h
 #define periarlequin_pd_prescribed_particles_h
 
+#include <periarlequin/base/separable_field.h>
 #include <periarlequin/pd/particle_state.h>
 #include <periarlequin/pd/pd_parameters.h>
 
@@ -99,7 +100,19 @@ namespace PeriArlequin
       Tensor<1, dim> velocity, acceleration;
       /** See for_each_support_component(). */
       unsigned int support;
+      /** The function as a SeparableField (or nullptr), and its spatial field here. */
+      const SeparableField<dim> *separable;
+      Tensor<1, dim>             spatial_field;
     };
+
+    /** A prescribed particle, with the spatial field of a separable function. */
+    static Particle
+    make_particle(const unsigned int           local_index,
+                  Function<dim>               *function,
+                  const std::array<bool, dim> &components,
+                  const bool                   prescribes_velocity,
+                  const Point<dim>            &position,
+                  const unsigned int           support);
 
     const Parameters::Peridynamics<dim> &parameters;
     std::vector<Particle>                particles;
