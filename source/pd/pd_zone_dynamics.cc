@@ -175,7 +175,28 @@ namespace PeriArlequin
         settling_force.clear();
         settling_start.clear();
       }
-    const auto accelerate = [&](const unsigned int first, const unsigned int end) {
+    // The load Functions are evaluated on one thread (a user's Function need not be
+    // thread-safe), at the particles they load (all under a body force, the layers under
+    // loaded faces otherwise); the rest on the threads.
+    const unsigned int n_owned   = ghosts.n_owned();
+    const auto         is_loaded = [&](const unsigned int i) {
+      return !slave[i] && (problem_data->has_body_force || traction_faces[i] != 0);
+    };
+    if (loaded)
+      {
+        load_values.resize(n_owned);
+        const std::vector<unsigned int> loaded_particles = join_over_chunks<unsigned int>(
+          n_owned,
+          [&](const unsigned int first, const unsigned int end, std::vector<unsigned int> &list) {
+            for (unsigned int i = first; i < end; ++i)
+              if (is_loaded(i))
+                list.push_back(i);
+          });
+        // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
+        for (const unsigned int i : loaded_particles)
+          load_values[i] = (1. - alpha[i]) * load_density(i, time);
+      }
+    for_each_subrange(n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
           // A slave's acceleration is that of the FE field, set by the coupling, and its
@@ -185,19 +206,13 @@ namespace PeriArlequin
               applied_force[i] = Tensor<1, dim>();
               continue;
             }
-          // Loads are blended like the mass, 1 - alpha (the FE zone takes alpha).
-          Tensor<1, dim> b = loaded ? (1. - alpha[i]) * load_density(i, time) : Tensor<1, dim>();
+          Tensor<1, dim> b = loaded && is_loaded(i) ? load_values[i] : Tensor<1, dim>();
           if (!settling_force.empty())
             b += settling_weight(i, time) * settling_force[i];
           a[i]             = (force_weight[i] * force_density[i] + b) / (rho * mass_weight[i]);
           applied_force[i] = volume * b;
         }
-    };
-    // The load functions are evaluated on one thread (a user's Function need not be thread-safe).
-    if (loaded)
-      accelerate(0, ghosts.n_owned());
-    else
-      for_each_subrange(ghosts.n_owned(), accelerate);
+    });
     if (obstacle)
       push_off_obstacle();
     prescribed.restore_accelerations(state);

@@ -718,6 +718,8 @@ namespace PeriArlequin
     mutable Vector<double> load_value = Vector<double>(dim);
     /** Of each owned particle, the faces whose traction it carries (bit b: boundary id b). */
     std::vector<std::uint8_t> traction_faces;
+    /** Blended load densities of the loaded particles in this step [N/m^dim] (scratch). */
+    std::vector<Tensor<1, dim>> load_values;
     /** Applied force (loads plus support reactions) of owned particles [N]. */
     std::vector<Tensor<1, dim>> applied_force, previous_applied_force, previous_displacement;
     /** Displacements and accelerations of the owned particles before a relaxation step. */
