@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/cell_locator.h>
 #include <periarlequin/pd/pd_zone.h>
 
@@ -411,11 +412,17 @@ namespace PeriArlequin
     const auto         x = ghosts.reference_positions();
     alpha.resize(n_total);
     state_weight.resize(n_total);
-    for (unsigned int i = 0; i < n_total; ++i)
-      {
-        alpha[i]        = blending_weight(x[i]);
-        state_weight[i] = energy_blending ? 1. - alpha[i] : 1.;
-      }
+    // A distance search each: on the threads (after every growth of an adaptive zone).
+    for_each_subrange(
+      n_total,
+      [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int i = first; i < end; ++i)
+          {
+            alpha[i]        = blending_weight(x[i]);
+            state_weight[i] = energy_blending ? 1. - alpha[i] : 1.;
+          }
+      },
+      256);
     force_weight.resize(n_owned);
     mass_weight.resize(n_owned);
     slave.resize(n_owned);

@@ -64,7 +64,7 @@ namespace PeriArlequin
     /** Selects cells by their iterator. */
     using CellFilter =
       std::function<bool(const typename Triangulation<dim>::active_cell_iterator &)>;
-    /** The Arlequin blending weight alpha(x) (0: pure PD). */
+    /** The Arlequin blending weight alpha(x) (0: pure PD); evaluated on the threads. */
     using WeightFunction = std::function<double(const Point<dim> &)>;
 
     /**
