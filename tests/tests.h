@@ -11,6 +11,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
@@ -163,6 +164,17 @@ namespace PeriArlequinTests
   {
     AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) >= 2,
                 ExcMessage("this test runs on 2 or more ranks"));
+  }
+
+  /**
+   * Stop unless this rank runs 2 threads: a comparison of 2 threads against 1 would pass
+   * vacuously on one (run_test(..., 2) asks for them; DEAL_II_NUM_THREADS may cap them).
+   */
+  inline void
+  require_two_threads()
+  {
+    AssertThrow(MultithreadInfo::n_threads() == 2,
+                ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
   }
 
   /** The verdict file on rank 0. */

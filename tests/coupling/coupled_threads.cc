@@ -45,8 +45,7 @@ main(int argc, char **argv)
     argc,
     argv,
     [] {
-      AssertThrow(MultithreadInfo::n_threads() == 2,
-                  ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
+      require_two_threads();
       const std::string plate = notched_glass_plate_case(true, 0.0075, 1.5e-5);
       check("weak on the grid, diagonal, damping: 2 threads vs 1, largest relative difference",
             threads_difference(plate, "weak grid"),

@@ -126,8 +126,7 @@ main(int argc, char **argv)
     argc,
     argv,
     [] {
-      AssertThrow(MultithreadInfo::n_threads() == 2,
-                  ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
+      require_two_threads();
       for (const bool tractions : {true, false})
         {
           patch_test<2>(1, "plane stress", tractions);

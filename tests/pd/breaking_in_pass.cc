@@ -156,8 +156,7 @@ main(int argc, char **argv)
     argc,
     argv,
     [] {
-      AssertThrow(MultithreadInfo::n_threads() == 2,
-                  ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
+      require_two_threads();
       compare_one_evaluation<2>("2D cracked block", cracked_random_block<2>() + no_fail_layer(2));
       compare_one_evaluation<3>("3D cracked block", cracked_random_block<3>() + no_fail_layer(3));
 

@@ -150,8 +150,7 @@ main(int argc, char **argv)
     argc,
     argv,
     [] {
-      AssertThrow(MultithreadInfo::n_threads() == 2,
-                  ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
+      require_two_threads();
       compare_densities<2>("2D plane stress, notched block with a hole", notched_block(""));
       compare_densities<2>("2D plane strain, notched block with a hole",
                            notched_block("plane strain"));
