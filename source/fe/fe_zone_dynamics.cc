@@ -93,15 +93,16 @@ namespace PeriArlequin
     TimeFactors<dim> time_factors(t, dt);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
-        const auto &dof      = prescribed[k];
-        auto       &function = *problem_data->boundary_conditions[dof.boundary_id].function;
-        const auto  value    = [&](const double at, const unsigned int which) {
+        const auto  &dof      = prescribed[k];
+        auto        &function = *problem_data->boundary_conditions[dof.boundary_id].function;
+        const double times[3] = {t - dt, t, t + dt};
+        const auto   value    = [&](const unsigned int which) {
           if (dof.separable)
             return time_factors(*dof.separable)[which] * dof.spatial_value;
-          function.set_time(at);
+          function.set_time(times[which]);
           return function.value(dof.location, dof.component);
         };
-        const double before = value(t - dt, 0), now = value(t, 1), after = value(t + dt, 2);
+        const double before = value(0), now = value(1), after = value(2);
         prescribed_velocity[k]                            = (after - before) / (2. * dt);
         prescribed_acceleration[k]                        = (after - 2. * now + before) / (dt * dt);
         state.displacement.local_element(dof.local_index) = now;

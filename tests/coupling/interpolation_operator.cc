@@ -7,6 +7,13 @@
 //    constraint residual |g| = |N u - d| must vanish.
 // Both are the same linear interpolation computed twice in round-off: tolerance 1e-12 of the
 // field scale (1 mm; times sqrt(rows) for the residual norm).
+// The transposes are applied by columns (each FE entry or multiplier gathers its terms), the
+// operators by rows: each pair must be adjoint, s . (N u) = (N^T s) . u over the slaves and
+// overlap nodes, and s . (H lambda) = (H^T s) . lambda for the multiplier grid of spacing 2
+// (pseudo-random s and lambda). Sums of about 1e4 products of size 1e-3 in another order:
+// tolerance 1e-12 of sum |s| |N u| (resp. |s| |H lambda|).
+
+#include <periarlequin/coupling/multiplier_space.h>
 
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/hp/mapping_collection.h>
@@ -15,6 +22,7 @@
 #include "coupled_cases.h"
 
 using namespace PeriArlequinTests;
+using namespace PeriArlequin;
 
 int
 main(int argc, char **argv)
@@ -63,6 +71,70 @@ main(int argc, char **argv)
     const double rows = std::sqrt(coupling.n_multipliers());
     check_below("overlap: |N u - point_value(u)| / (1 mm sqrt(rows))",
                 coupling.constraint_residuals().first / (1e-3 * rows),
+                1e-12);
+
+    // Adjoints. A pseudo-random vector per row, from the row number.
+    const auto rough = [](const unsigned int k) {
+      return Tensor<1, 2>({std::sin(3.7 * k + 1.3 * std::sin(2.1 * k)), std::cos(5.3 * k)});
+    };
+    std::vector<unsigned int> coupled, overlap_nodes;
+    std::vector<Point<2>>     overlap_positions;
+    for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
+      if (pd.is_slave(i) || pd.blending_weights()[i] > 0)
+        {
+          coupled.push_back(i);
+          if (!pd.is_slave(i))
+            {
+              overlap_nodes.push_back(i);
+              overlap_positions.push_back(pd.reference_positions()[i]);
+            }
+        }
+    InterpolationOperator<2> N;
+    N.reinit(fe, pd, coupled);
+    InterpolationOperator<2>::Values s(N.n_rows());
+    double                           rows_side = 0, scale = 0;
+    for (unsigned int r = 0; r < N.n_rows(); ++r)
+      {
+        s[r]                     = rough(r);
+        const Tensor<1, 2> value = N.interpolate(u, r);
+        rows_side += s[r] * value;
+        scale += s[r].norm() * value.norm();
+      }
+    LinearAlgebra::distributed::Vector<double> transposed;
+    fe.initialize_vector(transposed);
+    N.Tvmult(transposed, s);
+    double columns_side = 0;
+    for (unsigned int i = 0; i < transposed.locally_owned_size(); ++i)
+      columns_side += transposed.local_element(i) * u.local_element(i);
+    report("N: s . (N u)", rows_side);
+    check_below("N: |s . (N u) - (N^T s) . u| / sum |s| |N u|",
+                std::abs(rows_side - columns_side) / scale,
+                1e-12);
+
+    InterpolationOperator<2> overlap;
+    overlap.reinit(fe, pd, overlap_nodes);
+    GridMultiplierSpace<2>                     grid(overlap, fe, overlap_positions, 2., 0.);
+    LinearAlgebra::distributed::Vector<double> lambda, grid_transposed;
+    grid.initialize_vector(lambda);
+    grid.initialize_vector(grid_transposed);
+    for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
+      lambda.local_element(m) = rough(m)[0];
+    InterpolationOperator<2>::Values at_nodes, t(overlap.n_rows());
+    grid.apply_h(lambda, at_nodes);
+    double grid_rows_side = 0, grid_scale = 0;
+    for (unsigned int r = 0; r < overlap.n_rows(); ++r)
+      {
+        t[r] = rough(r + 7);
+        grid_rows_side += t[r] * at_nodes[r];
+        grid_scale += t[r].norm() * at_nodes[r].norm();
+      }
+    grid.apply_transpose_h(t, grid_transposed);
+    double grid_columns_side = 0;
+    for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
+      grid_columns_side += grid_transposed.local_element(m) * lambda.local_element(m);
+    report("H: t . (H lambda)", grid_rows_side);
+    check_below("H: |t . (H lambda) - (H^T t) . lambda| / sum |t| |H lambda|",
+                std::abs(grid_rows_side - grid_columns_side) / grid_scale,
                 1e-12);
   });
 }

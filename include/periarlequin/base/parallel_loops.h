@@ -28,11 +28,14 @@ namespace PeriArlequin
    * The chunks depend on @p n only: results combined in chunk order do not depend on the
    * number of threads (a reduction over TBB's own split would).
    */
+  /** The most fixed chunks a range is split into (for_each_fixed_chunk()). */
+  constexpr unsigned int max_fixed_chunks = 64;
+
   template <typename Work>
   unsigned int
   for_each_fixed_chunk(const unsigned int n, const Work &work)
   {
-    const unsigned int n_chunks = std::min(64u, 1 + n / 4096);
+    const unsigned int n_chunks = std::min(max_fixed_chunks, 1 + n / 4096);
     parallel::apply_to_subranges(
       0u,
       n_chunks,
@@ -51,7 +54,7 @@ namespace PeriArlequin
   T
   sum_over_chunks(const unsigned int n, const ChunkSum &chunk_sum)
   {
-    std::vector<T>     partial(64, T());
+    std::vector<T>     partial(max_fixed_chunks, T());
     const unsigned int n_chunks =
       for_each_fixed_chunk(n,
                            [&](const unsigned int c,
@@ -71,7 +74,7 @@ namespace PeriArlequin
   std::vector<T>
   join_over_chunks(const unsigned int n, const ChunkList &chunk_list)
   {
-    std::vector<std::vector<T>> lists(64);
+    std::vector<std::vector<T>> lists(max_fixed_chunks);
     const unsigned int          n_chunks =
       for_each_fixed_chunk(n,
                            [&](const unsigned int c,
