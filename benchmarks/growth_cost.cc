@@ -79,7 +79,8 @@ PERIARLEQUIN_REGISTER_CONVERSION_CRITERION(AdvancingPatch,
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads as the application: DEAL_II_NUM_THREADS, else every core.
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   if (argc < 5)
     {
       std::cerr << "usage: " << argv[0]

@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/coupling/interpolation_operator.h>
 
 #include <deal.II/fe/fe.h>
@@ -18,51 +19,75 @@ namespace PeriArlequin
     const auto &partitioner = *layout.get_partitioner();
     const auto  locations   = pd_zone.owned_particle_locations();
 
-    row_begin.clear();
+    // The rows on the threads (a point's cell, DoFs and shape values each): every chunk of
+    // particles lists its nonzero entries and row lengths, joined in order after.
+    struct ChunkRows
+    {
+      std::vector<Entry>        entries;
+      std::vector<unsigned int> lengths;
+    };
+    std::vector<ChunkRows> chunks(max_fixed_chunks);
+    const unsigned int     n_chunks = for_each_fixed_chunk(
+      particles.size(),
+      [&](const unsigned int c, const unsigned int first, const unsigned int end) {
+        ChunkRows                           &rows = chunks[c];
+        std::vector<types::global_dof_index> dof_indices;
+        std::vector<Entry>                   cell_entries;
+        for (unsigned int p = first; p < end; ++p)
+          {
+            const unsigned int i                         = particles[p];
+            const auto &[triangulation_cell, unit_point] = locations[i];
+            const typename DoFHandler<dim>::active_cell_iterator cell(
+              &dof_handler.get_triangulation(),
+              triangulation_cell->level(),
+              triangulation_cell->index(),
+              &dof_handler);
+            const auto &fe = cell->get_fe();
+            if (fe.n_dofs_per_cell() == 0)
+              {
+                std::ostringstream where;
+                where << pd_zone.reference_positions()[i];
+                AssertThrow(false,
+                            ExcMessage("The PD particle at " + where.str() +
+                                       " is coupled to the FE field but its cell has no FE "
+                                           "unknowns: the overlap and the slave layer must lie in "
+                                           "FE cells (cells whose centre is outside "
+                                           "Peridynamics/Region)."));
+              }
+            // The FE zone's element is dim copies of one scalar element: node j of the scalar
+            // element carries the DoF of component c of copy c.
+            AssertThrow(fe.n_base_elements() == 1 && fe.element_multiplicity(0) == dim,
+                        ExcInternalError());
+            const auto &base = fe.base_element(0);
+            dof_indices.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(dof_indices);
+            cell_entries.resize(base.n_dofs_per_cell());
+            for (unsigned int j = 0; j < base.n_dofs_per_cell(); ++j)
+              cell_entries[j].value = base.shape_value(j, unit_point);
+            for (unsigned int k = 0; k < dof_indices.size(); ++k)
+              {
+                const auto [base_and_copy, node] = fe.system_to_base_index(k);
+                cell_entries[node].dofs[base_and_copy.second] =
+                  static_cast<unsigned int>(partitioner.global_to_local(dof_indices[k]));
+              }
+            unsigned int length = 0;
+            for (const Entry &entry : cell_entries)
+              if (entry.value != 0)
+                {
+                  rows.entries.push_back(entry);
+                  ++length;
+                }
+            rows.lengths.push_back(length);
+          }
+      });
+    row_begin.assign(1, 0);
     row_begin.reserve(particles.size() + 1);
-    row_begin.push_back(0);
     entries.clear();
-    entries.reserve(particles.size() * dof_handler.get_fe_collection().max_dofs_per_cell() / dim);
-    std::vector<types::global_dof_index> dof_indices;
-    std::vector<Entry>                   cell_entries;
-    for (const unsigned int i : particles)
+    for (unsigned int c = 0; c < n_chunks; ++c)
       {
-        const auto &[triangulation_cell, unit_point] = locations[i];
-        const typename DoFHandler<dim>::active_cell_iterator cell(&dof_handler.get_triangulation(),
-                                                                  triangulation_cell->level(),
-                                                                  triangulation_cell->index(),
-                                                                  &dof_handler);
-        const auto                                          &fe = cell->get_fe();
-        if (fe.n_dofs_per_cell() == 0)
-          {
-            std::ostringstream where;
-            where << pd_zone.reference_positions()[i];
-            AssertThrow(false,
-                        ExcMessage("The PD particle at " + where.str() +
-                                   " is coupled to the FE field but its cell has no FE "
-                                   "unknowns: the overlap and the slave layer must lie in FE "
-                                   "cells (cells whose centre is outside Peridynamics/Region)."));
-          }
-        // The FE zone's element is dim copies of one scalar element: node j of the scalar
-        // element carries the DoF of component c of copy c.
-        AssertThrow(fe.n_base_elements() == 1 && fe.element_multiplicity(0) == dim,
-                    ExcInternalError());
-        const auto &base = fe.base_element(0);
-        dof_indices.resize(fe.n_dofs_per_cell());
-        cell->get_dof_indices(dof_indices);
-        cell_entries.resize(base.n_dofs_per_cell());
-        for (unsigned int j = 0; j < base.n_dofs_per_cell(); ++j)
-          cell_entries[j].value = base.shape_value(j, unit_point);
-        for (unsigned int k = 0; k < dof_indices.size(); ++k)
-          {
-            const auto [base_and_copy, node] = fe.system_to_base_index(k);
-            cell_entries[node].dofs[base_and_copy.second] =
-              static_cast<unsigned int>(partitioner.global_to_local(dof_indices[k]));
-          }
-        for (const Entry &entry : cell_entries)
-          if (entry.value != 0)
-            entries.push_back(entry);
-        row_begin.push_back(entries.size());
+        entries.insert(entries.end(), chunks[c].entries.begin(), chunks[c].entries.end());
+        for (const unsigned int length : chunks[c].lengths)
+          row_begin.push_back(row_begin.back() + length);
       }
 
     std::vector<typename TransposedRows<dim>::Term> terms;

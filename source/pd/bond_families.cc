@@ -293,8 +293,10 @@ namespace PeriArlequin
               box.lower[d] = std::min(box.lower[d], corner[d]);
               box.upper[d] = std::max(box.upper[d], corner[d]);
             }
-        for (unsigned int i = 0; i < n_total; ++i)
-          near_crack[i] = near_crack[i] || box.distance(x[i]) <= 1.01 * longest_bond;
+        for_each_subrange(n_total, [&](const unsigned int first, const unsigned int end) {
+          for (unsigned int i = first; i < end; ++i)
+            near_crack[i] = near_crack[i] || box.distance(x[i]) <= 1.01 * longest_bond;
+        });
       }
 
     // One pass: about half of the stencil is stored a particle (a bond between two owned
@@ -459,12 +461,15 @@ namespace PeriArlequin
   typename BondFamilies<dim>::IdPairs
   BondFamilies<dim>::broken_bonds(ArrayView<const types::particle_index> ids) const
   {
-    IdPairs broken_pairs;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
-        if (state[n] == broken)
-          broken_pairs.emplace_back(std::minmax(ids[i], ids[neighbor(i, n)]));
-    return broken_pairs;
+    // On the threads (a scan of every family, at each growth), joined in the order of a loop.
+    return join_over_chunks<typename IdPairs::value_type>(
+      n_owned,
+      [&](const unsigned int first, const unsigned int end, IdPairs &broken_pairs) {
+        for (unsigned int i = first; i < end; ++i)
+          for (unsigned int n = family_begin[i]; n < family_begin[i + 1]; ++n)
+            if (state[n] == broken)
+              broken_pairs.emplace_back(std::minmax(ids[i], ids[neighbor(i, n)]));
+      });
   }
 
   template <int dim>

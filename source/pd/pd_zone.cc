@@ -48,6 +48,7 @@ namespace PeriArlequin
     , lattice(to_point<dim>(geometry.lower_corner),
               to_point<dim>(geometry.upper_corner),
               parameters.lattice_spacing)
+    , volume(std::pow(parameters.lattice_spacing, dim))
   {
     const double dx = parameters.lattice_spacing;
     for (unsigned int d = 0; d < dim; ++d)
@@ -261,24 +262,50 @@ namespace PeriArlequin
     for (unsigned int t = 0; t < weighted.size(); ++t)
       weighted[t] = alpha[t] > 0;
     const std::vector<std::uint8_t> next_to_weighted = bonds.owned_within_reach(weighted);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        if (!next_to_weighted[i])
-          continue;
-        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+    // On the threads: each chunk lists the particles it finds near the overlap (its own and
+    // the owned other ends of its bonds, marked after) and the first bond to the overlap
+    // that a crack cuts.
+    struct ChunkFindings
+    {
+      std::vector<unsigned int> near;
+      bool                      any_weighted = false, cut = false;
+      Point<dim>                cut_at;
+    };
+    std::vector<ChunkFindings> found(max_fixed_chunks);
+    const unsigned int         n_chunks = for_each_fixed_chunk(
+      n_owned,
+      [&](const unsigned int c, const unsigned int first, const unsigned int end) {
+        ChunkFindings &chunk = found[c];
+        for (unsigned int i = first; i < end; ++i)
           {
-            const unsigned int j = bonds.neighbor(i, n);
-            any_weighted         = any_weighted || alpha[i] > 0;
-            if (alpha[i] == 0 && alpha[j] > 0)
-              near[i] = 1;
-            if (j < n_owned && alpha[j] == 0 && alpha[i] > 0)
-              near[j] = 1;
-            if ((alpha[i] > 0 || alpha[j] > 0) && bonds.state[n] == BondFamilies<dim>::broken &&
-                !cut)
+            if (!next_to_weighted[i])
+              continue;
+            for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
               {
-                cut    = true;
-                cut_at = alpha[i] > 0 ? x[i] : x[j];
+                const unsigned int j = bonds.neighbor(i, n);
+                chunk.any_weighted   = chunk.any_weighted || alpha[i] > 0;
+                if (alpha[i] == 0 && alpha[j] > 0)
+                  chunk.near.push_back(i);
+                if (j < n_owned && alpha[j] == 0 && alpha[i] > 0)
+                  chunk.near.push_back(j);
+                if ((alpha[i] > 0 || alpha[j] > 0) && bonds.state[n] == BondFamilies<dim>::broken &&
+                    !chunk.cut)
+                  {
+                    chunk.cut    = true;
+                    chunk.cut_at = alpha[i] > 0 ? x[i] : x[j];
+                  }
               }
+          }
+      });
+    for (unsigned int c = 0; c < n_chunks; ++c)
+      {
+        for (const unsigned int i : found[c].near)
+          near[i] = 1;
+        any_weighted = any_weighted || found[c].any_weighted;
+        if (found[c].cut && !cut)
+          {
+            cut    = true;
+            cut_at = found[c].cut_at;
           }
       }
     if (Utilities::MPI::logical_or(cut, communicator))
@@ -297,22 +324,27 @@ namespace PeriArlequin
     ghosts.update_ghosts(make_array_view(near), 1);
     // Their bonds among themselves and into the pure PD zone, intact now (those into the
     // overlap are unbreakable).
-    bonds_near_overlap.clear();
     std::vector<bool> near_flag(ghosts.n_total());
     for (unsigned int t = 0; t < near_flag.size(); ++t)
       near_flag[t] = near[t] > 0;
     const std::vector<std::uint8_t> next_to_near = bonds.owned_within_reach(near_flag);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        if (!next_to_near[i])
-          continue;
-        for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+    bonds_near_overlap = join_over_chunks<std::pair<unsigned int, std::size_t>>(
+      n_owned,
+      [&](const unsigned int                                 first,
+          const unsigned int                                 end,
+          std::vector<std::pair<unsigned int, std::size_t>> &list) {
+        for (unsigned int i = first; i < end; ++i)
           {
-            const unsigned int j = bonds.neighbor(i, n);
-            if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
-              bonds_near_overlap.emplace_back(near[i] > 0 ? i : j, n);
+            if (!next_to_near[i])
+              continue;
+            for (unsigned int n = bonds.family_begin[i]; n < bonds.family_begin[i + 1]; ++n)
+              {
+                const unsigned int j = bonds.neighbor(i, n);
+                if (bonds.state[n] == BondFamilies<dim>::intact && (near[i] > 0 || near[j] > 0))
+                  list.emplace_back(near[i] > 0 ? i : j, n);
+              }
           }
-      }
+      });
   }
 
   template <int dim>
@@ -345,18 +377,29 @@ namespace PeriArlequin
         std::array<bool, dim> components;
         for (unsigned int d = 0; d < dim; ++d)
           components[d] = condition.type == BoundaryType::displacement && condition.components[d];
-        for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
-          {
-            const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
-                                                   domain.upper[direction] - x[i][direction];
-            const double from_lattice_face =
-              (b % 2 == 0) ? distance : lattice_upper[direction] - x[i][direction];
-            if (condition.type == BoundaryType::traction && from_lattice_face < dx * (1. - 1e-12))
-              traction_faces[i] |= (1u << b);
-            else if (condition.type == BoundaryType::displacement && !slave[i] &&
-                     distance < depth * (1. - 1e-12))
-              prescribed.add(i, x[i], *condition.function, components, b);
-          }
+        if (condition.type == BoundaryType::free)
+          continue;
+        // On the threads: each chunk marks its own particles' faces and lists the particles
+        // of the layer, prescribed after in their order.
+        const std::vector<unsigned int> layer = join_over_chunks<unsigned int>(
+          ghosts.n_owned(),
+          [&](const unsigned int first, const unsigned int end, std::vector<unsigned int> &list) {
+            for (unsigned int i = first; i < end; ++i)
+              {
+                const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
+                                                       domain.upper[direction] - x[i][direction];
+                const double from_lattice_face =
+                  (b % 2 == 0) ? distance : lattice_upper[direction] - x[i][direction];
+                if (condition.type == BoundaryType::traction &&
+                    from_lattice_face < dx * (1. - 1e-12))
+                  traction_faces[i] |= (1u << b);
+                else if (condition.type == BoundaryType::displacement && !slave[i] &&
+                         distance < depth * (1. - 1e-12))
+                  list.push_back(i);
+              }
+          });
+        for (const unsigned int i : layer)
+          prescribed.add(i, x[i], *condition.function, components, b);
       }
   }
 
@@ -505,13 +548,6 @@ namespace PeriArlequin
   }
 
   template <int dim>
-  bool
-  PDZone<dim>::is_slave(const unsigned int i) const
-  {
-    return slave[i];
-  }
-
-  template <int dim>
   const BondFamilies<dim> &
   PDZone<dim>::get_bonds() const
   {
@@ -586,20 +622,6 @@ namespace PeriArlequin
   PDZone<dim>::get_domain() const
   {
     return domain;
-  }
-
-  template <int dim>
-  double
-  PDZone<dim>::particle_volume() const
-  {
-    return std::pow(parameters.lattice_spacing, dim);
-  }
-
-  template <int dim>
-  double
-  PDZone<dim>::particle_mass(const unsigned int i) const
-  {
-    return material.density * particle_volume() * mass_weight[i];
   }
 
   template <int dim>

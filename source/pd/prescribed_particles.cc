@@ -1,3 +1,4 @@
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/prescribed_particles.h>
 
 #include <deal.II/base/mpi.h>
@@ -17,22 +18,38 @@ namespace PeriArlequin
   {
     particles.clear();
     is_prescribed.assign(n_owned, false);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
-        if (const auto &region = parameters.prescribed[r]; region.region.contains(positions[i]))
-          {
-            std::array<bool, dim> components;
-            for (unsigned int d = 0; d < dim; ++d)
-              components[d] = region.components[d];
-            particles.push_back(make_particle(i,
-                                              region.function.get(),
-                                              components,
-                                              region.prescribes_velocity,
-                                              positions[i],
-                                              2 * dim + r));
-            is_prescribed[i] = true;
-            break;
-          }
+    if (parameters.prescribed.empty())
+      return;
+    // The region tests on the threads (every particle of a zone after each growth); the
+    // particles made in their order, with the first region that holds each.
+    const std::vector<std::pair<unsigned int, unsigned int>> held =
+      join_over_chunks<std::pair<unsigned int, unsigned int>>(
+        n_owned,
+        [&](const unsigned int                                  first,
+            const unsigned int                                  end,
+            std::vector<std::pair<unsigned int, unsigned int>> &list) {
+          for (unsigned int i = first; i < end; ++i)
+            for (unsigned int r = 0; r < parameters.prescribed.size(); ++r)
+              if (parameters.prescribed[r].region.contains(positions[i]))
+                {
+                  list.emplace_back(i, r);
+                  break;
+                }
+        });
+    for (const auto &[i, r] : held)
+      {
+        const auto           &region = parameters.prescribed[r];
+        std::array<bool, dim> components;
+        for (unsigned int d = 0; d < dim; ++d)
+          components[d] = region.components[d];
+        particles.push_back(make_particle(i,
+                                          region.function.get(),
+                                          components,
+                                          region.prescribes_velocity,
+                                          positions[i],
+                                          2 * dim + r));
+        is_prescribed[i] = true;
+      }
   }
 
   template <int dim>

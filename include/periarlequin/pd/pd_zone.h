@@ -393,16 +393,25 @@ namespace PeriArlequin
     }
     /** Is owned particle @p i a slave (1 - alpha below Coupling/Minimum PD weight)? */
     bool
-    is_slave(const unsigned int i) const;
+    is_slave(const unsigned int i) const
+    {
+      return slave[i];
+    }
     const BondFamilies<dim> &
     get_bonds() const;
 
     /** Lattice cell volume dx^dim [m^dim]. */
     double
-    particle_volume() const;
+    particle_volume() const
+    {
+      return volume;
+    }
     /** Mass of owned particle @p i, (1 - alpha_I) rho V [kg]. */
     double
-    particle_mass(const unsigned int i) const;
+    particle_mass(const unsigned int i) const
+    {
+      return material.density * volume * mass_weight[i];
+    }
     /** Blended internal force on owned particle @p i [N] (a slave's feeds the FE nodes). */
     Tensor<1, dim>
     blended_force(const unsigned int i) const;
@@ -671,7 +680,9 @@ namespace PeriArlequin
     double                  minimum_weight  = 1.;
     const ProblemData<dim> *problem_data    = nullptr;
     Lattice<dim>            lattice;
-    double                  time_step = 0;
+    /** The lattice cell volume dx^dim [m^dim], asked for in loops over particles. */
+    const double volume;
+    double       time_step = 0;
 
     /** Model outputs of owned particles, and its particle scalars (owned and ghosts). */
     std::vector<Tensor<1, dim>> force_density;
