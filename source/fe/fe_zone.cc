@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -24,7 +25,6 @@ namespace PeriArlequin
     : triangulation(triangulation)
     , material(material)
     , communicator(triangulation.get_communicator())
-    , mapping(1)
     , dof_handler(triangulation)
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(fe_parameters.degree), dim));
@@ -221,7 +221,9 @@ namespace PeriArlequin
     const double mu     = material.shear_modulus();
     const double rho    = material.density;
 
-    hp::FEValues<dim>                    hp_fe_values(fe_collection,
+    const hp::MappingCollection<dim>     mappings(mapping);
+    hp::FEValues<dim>                    hp_fe_values(mappings,
+                                   fe_collection,
                                    cell_quadrature,
                                    update_values | update_gradients | update_quadrature_points |
                                      update_JxW_values);
@@ -411,9 +413,10 @@ namespace PeriArlequin
     if (!data.has_body_force && !data.has_tractions())
       return;
 
-    const UpdateFlags     flags = update_values | update_quadrature_points | update_JxW_values;
-    hp::FEValues<dim>     hp_fe_values(fe_collection, cell_quadrature, flags);
-    hp::FEFaceValues<dim> hp_face_values(fe_collection, face_quadrature, flags);
+    const UpdateFlags flags = update_values | update_quadrature_points | update_JxW_values;
+    const hp::MappingCollection<dim> mappings(mapping);
+    hp::FEValues<dim>                hp_fe_values(mappings, fe_collection, cell_quadrature, flags);
+    hp::FEFaceValues<dim> hp_face_values(mappings, fe_collection, face_quadrature, flags);
     Vector<double>        cell_force;
     Vector<double>        load(dim);
     std::vector<types::global_dof_index> dof_indices;

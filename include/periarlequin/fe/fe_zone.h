@@ -5,6 +5,7 @@
 #include <periarlequin/base/problem_data.h>
 #include <periarlequin/base/separable_field.h>
 #include <periarlequin/fe/contact.h>
+#include <periarlequin/fe/mapping_without_similarity.h>
 #include <periarlequin/fe/owned_rows_matrix.h>
 #include <periarlequin/time/integrated_zone.h>
 
@@ -349,7 +350,7 @@ namespace PeriArlequin
     hp::FECollection<dim>                            fe_collection;
     hp::QCollection<dim>                             cell_quadrature;
     hp::QCollection<dim - 1>                         face_quadrature;
-    MappingQ<dim>                                    mapping;
+    MappingWithoutSimilarity<dim>                    mapping;
     DoFHandler<dim>                                  dof_handler;
     IndexSet                                         locally_owned_dofs;
     IndexSet                                         locally_relevant_dofs;
