@@ -74,6 +74,33 @@ namespace PeriArlequin
       pcout << ", " << static_cast<double>(pd_zone->n_global_bonds()) * steps_run / loop_time
             << " PD bond-updates/s";
     pcout << std::endl;
+    if (zone_growth && pd_zone && !quasi_static && steps_run > 0)
+      {
+        // What decides whether the adaptive zone pays on this case: how near it came to the
+        // particles of pure PD, and what growing it cost.
+        const auto   times = timer.get_summary_data(TimerOutput::total_wall_time);
+        const auto   found = times.find("PD zone growth");
+        const double growth =
+          Utilities::MPI::max(found == times.end() ? 0. : found->second, communicator);
+        double pure_pd_sites = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          pure_pd_sites *= std::floor((geometry.upper_corner[d] - geometry.lower_corner[d]) /
+                                        pd_parameters.lattice_spacing +
+                                      1e-9);
+        const double share = static_cast<double>(pd_zone->n_global_particles()) / pure_pd_sites;
+        const double spent = loop_time > 0 ? growth / loop_time : 0.;
+        pcout << "Adaptive PD zone: " << pd_zone->n_global_particles() << " particles at the end, "
+              << std::lround(100. * share) << " % of the "
+              << static_cast<std::uint64_t>(pure_pd_sites)
+              << " lattice sites of the domain's box (pure PD); "
+              << zone_growth->n_converted_cells() << " cells converted; growing the zone took "
+              << std::lround(100. * spent) << " % of the time loop.";
+        if (share > 0.5 && spent > 0.2)
+          pcout << " With more than half of pure PD's particles and a fifth of the loop spent "
+                   "growing, pure PD (Coupling/Method = none, Peridynamics/Region over the "
+                   "domain) may be as fast on this case.";
+        pcout << std::endl;
+      }
     if (output_parameters.print_timing)
       timer.print_wall_time_statistics(communicator);
   }
