@@ -238,11 +238,14 @@ namespace PeriArlequin
   std::vector<bool>
   PDZone<dim>::unbreakable_particles() const
   {
-    const auto        x = ghosts.reference_positions();
-    std::vector<bool> no_fail(ghosts.n_total());
-    for (unsigned int i = 0; i < no_fail.size(); ++i)
-      no_fail[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
-    return no_fail;
+    // Tested on the threads into bytes (the bits of a std::vector<bool> share their words).
+    const auto                x = ghosts.reference_positions();
+    std::vector<std::uint8_t> tested(ghosts.n_total());
+    for_each_subrange(tested.size(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        tested[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
+    });
+    return std::vector<bool>(tested.begin(), tested.end());
   }
 
   template <int dim>

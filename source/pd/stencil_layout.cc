@@ -32,19 +32,21 @@ namespace PeriArlequin
 
     // The box of the held sites, padded by the reach so that every neighbour of a held site
     // has a slot of its own.
+    // The sites and slots on the threads (a division per axis and particle, at every growth).
     std::vector<typename Lattice<dim>::Site> sites(n_held);
-    std::array<int, dim>                     upper;
+    for_each_subrange(n_held, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        sites[i] = lattice.site(ids[i]);
+    });
+    std::array<int, dim> upper;
     lower.fill(std::numeric_limits<int>::max());
     upper.fill(std::numeric_limits<int>::min());
     for (unsigned int i = 0; i < n_held; ++i)
-      {
-        sites[i] = lattice.site(ids[i]);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lower[d] = std::min(lower[d], static_cast<int>(sites[i][d]));
-            upper[d] = std::max(upper[d], static_cast<int>(sites[i][d]));
-          }
-      }
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min(lower[d], static_cast<int>(sites[i][d]));
+          upper[d] = std::max(upper[d], static_cast<int>(sites[i][d]));
+        }
     n_box_slots = n_held > 0 ? 1 : 0;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -55,13 +57,16 @@ namespace PeriArlequin
 
     slot.resize(n_held);
     local_of_slot.assign(n_box_slots, numbers::invalid_unsigned_int);
-    for (unsigned int i = 0; i < n_held; ++i)
-      {
-        slot[i] = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          slot[i] += static_cast<std::size_t>(sites[i][d] - lower[d]) * stride[d];
-        local_of_slot[slot[i]] = i;
-      }
+    // Every held site has a slot of its own: the threads write different entries.
+    for_each_subrange(n_held, [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        {
+          slot[i] = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            slot[i] += static_cast<std::size_t>(sites[i][d] - lower[d]) * stride[d];
+          local_of_slot[slot[i]] = i;
+        }
+    });
 
     // Runs: the held slots of each lattice line, in the order of the lines.
     const std::size_t line_length = n_held > 0 ? stride[1] : 1;
