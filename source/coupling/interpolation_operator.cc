@@ -82,7 +82,11 @@ namespace PeriArlequin
       });
     row_begin.assign(1, 0);
     row_begin.reserve(particles.size() + 1);
+    std::size_t n_entries = 0;
+    for (unsigned int c = 0; c < n_chunks; ++c)
+      n_entries += chunks[c].entries.size();
     entries.clear();
+    entries.reserve(n_entries);
     for (unsigned int c = 0; c < n_chunks; ++c)
       {
         entries.insert(entries.end(), chunks[c].entries.begin(), chunks[c].entries.end());
