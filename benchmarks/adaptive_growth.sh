@@ -4,7 +4,8 @@
 # benchmarks/growth_cost.cc (target periarlequin-growth-cost) on a 2D plate 50 mm high, lattice
 # 0.25 mm, FE cells 2 mm, a PD zone over the plate's height and ZONES metres long (25,000 to
 # 100,000 particles), growing by a square patch of SIDES cells a side (1, 9, 36 cells) every
-# 10 steps, 5 growths a run, 1 rank, REPEATS (3) runs of each; medians.
+# 10 steps, 5 growths a run, 1 rank, REPEATS (3) runs of each; medians. Threads as the
+# application (DEAL_II_NUM_THREADS, else every core); the records up to 2026-12-07 ran on one.
 #
 #   benchmarks/adaptive_growth.sh [build-dir] [other-build-dir]
 #
