@@ -177,6 +177,21 @@ namespace PeriArlequinTests
                 ExcMessage("the test needs 2 threads (DEAL_II_NUM_THREADS below 2?)"));
   }
 
+  /**
+   * Call @p work with deal.II limited to one thread, as DEAL_II_NUM_THREADS=1 does, then lift
+   * the limit: deal.II then takes its serial paths (a loop is one range, FEValues reuse the
+   * geometry of a translated cell), not only one task at a time as in a one-thread TBB arena.
+   */
+  template <typename Work>
+  void
+  on_one_thread(const Work &work)
+  {
+    MultithreadInfo::set_thread_limit(1);
+    work();
+    MultithreadInfo::set_thread_limit();
+    require_two_threads();
+  }
+
   /** The verdict file on rank 0. */
   inline std::ostream &
   verdicts()

@@ -26,6 +26,16 @@ namespace PeriArlequin
 
   template <int dim>
   types::particle_index
+  Lattice<dim>::size() const
+  {
+    types::particle_index n = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n *= n_sites[d];
+    return n;
+  }
+
+  template <int dim>
+  types::particle_index
   Lattice<dim>::id(const Site &site) const
   {
     types::particle_index id = 0;

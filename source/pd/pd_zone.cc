@@ -565,6 +565,13 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  types::particle_index
+  PDZone<dim>::n_lattice_sites() const
+  {
+    return lattice.size();
+  }
+
+  template <int dim>
   std::size_t
   PDZone<dim>::n_global_bonds() const
   {

@@ -82,16 +82,11 @@ namespace PeriArlequin
         const auto   found = times.find("PD zone growth");
         const double growth =
           Utilities::MPI::max(found == times.end() ? 0. : found->second, communicator);
-        double pure_pd_sites = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          pure_pd_sites *= std::floor((geometry.upper_corner[d] - geometry.lower_corner[d]) /
-                                        pd_parameters.lattice_spacing +
-                                      1e-9);
+        const auto   pure_pd_sites = pd_zone->n_lattice_sites();
         const double share = static_cast<double>(pd_zone->n_global_particles()) / pure_pd_sites;
         const double spent = loop_time > 0 ? growth / loop_time : 0.;
         pcout << "Adaptive PD zone: " << pd_zone->n_global_particles() << " particles at the end, "
-              << std::lround(100. * share) << " % of the "
-              << static_cast<std::uint64_t>(pure_pd_sites)
+              << std::lround(100. * share) << " % of the " << pure_pd_sites
               << " lattice sites of the domain's box (pure PD); "
               << zone_growth->n_converted_cells() << " cells converted; growing the zone took "
               << std::lround(100. * spent) << " % of the time loop.";

@@ -77,6 +77,19 @@ main(int argc, char **argv)
     const auto rough = [](const unsigned int k) {
       return Tensor<1, 2>({std::sin(3.7 * k + 1.3 * std::sin(2.1 * k)), std::cos(5.3 * k)});
     };
+    // The rows' side s.(A x) against the columns' (A^T s).x, relative to the sum of |s| |A x|.
+    const auto check_adjoint = [](const std::string                                &name,
+                                  const std::string                                &check_name,
+                                  const double                                      rows_side,
+                                  const double                                      scale,
+                                  const LinearAlgebra::distributed::Vector<double> &transposed,
+                                  const LinearAlgebra::distributed::Vector<double> &x) {
+      double columns_side = 0;
+      for (unsigned int i = 0; i < x.locally_owned_size(); ++i)
+        columns_side += transposed.local_element(i) * x.local_element(i);
+      report(name, rows_side);
+      check_below(check_name, std::abs(rows_side - columns_side) / scale, 1e-12);
+    };
     std::vector<unsigned int> coupled, overlap_nodes;
     std::vector<Point<2>>     overlap_positions;
     for (unsigned int i = 0; i < pd.n_owned_particles(); ++i)
@@ -103,13 +116,12 @@ main(int argc, char **argv)
     LinearAlgebra::distributed::Vector<double> transposed;
     fe.initialize_vector(transposed);
     N.Tvmult(transposed, s);
-    double columns_side = 0;
-    for (unsigned int i = 0; i < transposed.locally_owned_size(); ++i)
-      columns_side += transposed.local_element(i) * u.local_element(i);
-    report("N: s . (N u)", rows_side);
-    check_below("N: |s . (N u) - (N^T s) . u| / sum |s| |N u|",
-                std::abs(rows_side - columns_side) / scale,
-                1e-12);
+    check_adjoint("N: s . (N u)",
+                  "N: |s . (N u) - (N^T s) . u| / sum |s| |N u|",
+                  rows_side,
+                  scale,
+                  transposed,
+                  u);
 
     InterpolationOperator<2> overlap;
     overlap.reinit(fe, pd, overlap_nodes);
@@ -129,12 +141,11 @@ main(int argc, char **argv)
         grid_scale += t[r].norm() * at_nodes[r].norm();
       }
     grid.apply_transpose_h(t, grid_transposed);
-    double grid_columns_side = 0;
-    for (unsigned int m = 0; m < lambda.locally_owned_size(); ++m)
-      grid_columns_side += grid_transposed.local_element(m) * lambda.local_element(m);
-    report("H: t . (H lambda)", grid_rows_side);
-    check_below("H: |t . (H lambda) - (H^T t) . lambda| / sum |t| |H lambda|",
-                std::abs(grid_rows_side - grid_columns_side) / grid_scale,
-                1e-12);
+    check_adjoint("H: t . (H lambda)",
+                  "H: |t . (H lambda) - (H^T t) . lambda| / sum |t| |H lambda|",
+                  grid_rows_side,
+                  grid_scale,
+                  grid_transposed,
+                  lambda);
   });
 }

@@ -12,8 +12,6 @@
 // energy to 1e-11 relative: it is the sum over the boundary nodes of u.f (the interior forces
 // cancel to round-off); measured 3e-15 (3D Q1) to 5.5e-13 (2D Q2).
 
-#include <tbb/task_arena.h>
-
 #include "../tests.h"
 
 using namespace PeriArlequinTests;
@@ -86,9 +84,7 @@ patch_test(const unsigned int degree, const std::string &model, const bool tract
   LinearAlgebra::distributed::Vector<double> internal, external;
   fe_zone.initialize_vector(internal);
   fe_zone.initialize_vector(external);
-  tbb::task_arena one_thread(1);
-  one_thread.execute(
-    [&] { fe_zone.compute_internal_force(simulator->get_displacement(), internal); });
+  on_one_thread([&] { fe_zone.compute_internal_force(simulator->get_displacement(), internal); });
   const LinearAlgebra::distributed::Vector<double> one_thread_force = internal;
   fe_zone.compute_internal_force(simulator->get_displacement(), internal);
   unsigned int differing = 0;

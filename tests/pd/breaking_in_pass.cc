@@ -18,8 +18,6 @@
 
 #include <periarlequin/pd/fracture_criterion.h>
 
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 
 #include "../tests.h"
@@ -165,7 +163,7 @@ main(int argc, char **argv)
       auto in_pass_one_thread   = make_simulator<2>(plate + criterion("critical stretch"));
       auto in_loop              = make_simulator<2>(plate + criterion("stretch in a loop"));
       in_pass->run();
-      tbb::task_arena(1).execute([&] { in_pass_one_thread->run(); });
+      on_one_thread([&] { in_pass_one_thread->run(); });
       in_loop->run();
       require_active_column(*in_pass, "pre-cracked plate, in the pass", "broken_bonds");
       check("pre-cracked plate, 300 steps, histories, pass vs loop",

@@ -22,8 +22,6 @@
 //    every static case: tolerance 0.
 // On 2 ranks the same numbers come out (the test's .mpirun=2 output is the 1-rank one).
 
-#include <tbb/task_arena.h>
-
 #include "../coupling/coupled_cases.h"
 #include "../tests.h"
 #include "plate.h"
@@ -99,8 +97,7 @@ namespace
                     0.5);
       }
     // The stencil kernel on one thread, then on all (2) of them.
-    tbb::task_arena one_thread(1);
-    one_thread.execute([&] { a.compute_internal_forces(); });
+    on_one_thread([&] { a.compute_internal_forces(); });
     const std::vector<Tensor<1, dim>> one_thread_force(a.force_densities().begin(),
                                                        a.force_densities().end());
     const std::vector<double>         one_thread_energy(a.energy_densities().begin(),

@@ -23,14 +23,14 @@ namespace PeriArlequin
     parallel::apply_to_subranges(0u, n, work, grain);
   }
 
+  /** The most fixed chunks a range is split into (for_each_fixed_chunk()). */
+  constexpr unsigned int max_fixed_chunks = 64;
+
   /**
    * Call @p work(chunk, first, end) on fixed chunks of [0, @p n), on the threads of this rank.
    * The chunks depend on @p n only: results combined in chunk order do not depend on the
    * number of threads (a reduction over TBB's own split would).
    */
-  /** The most fixed chunks a range is split into (for_each_fixed_chunk()). */
-  constexpr unsigned int max_fixed_chunks = 64;
-
   template <typename Work>
   unsigned int
   for_each_fixed_chunk(const unsigned int n, const Work &work)

@@ -17,7 +17,8 @@ namespace PeriArlequin
    * stiffness and loads. Through this mapping the FE zone computes every cell's geometry the
    * same way whatever the thread count (DEAL_II_NUM_THREADS), so its results do not depend on
    * it. The cost is a Jacobian per quadrature point where a translated cell could have copied
-   * it: a little more set-up, nothing in the time step.
+   * it, on one thread only and only where FEValues are used: assembly (set-up, growths) and
+   * the strain checks, not the time step's K u.
    */
   template <int dim>
   class MappingWithoutSimilarity : public MappingQ<dim>
@@ -36,13 +37,12 @@ namespace PeriArlequin
   protected:
     CellSimilarity::Similarity
     fill_fe_values(
-      const typename Triangulation<dim>::cell_iterator               &cell,
-      const CellSimilarity::Similarity                                similarity,
+      const typename Triangulation<dim>::cell_iterator &cell,
+      const CellSimilarity::Similarity /*similarity*/,
       const Quadrature<dim>                                          &quadrature,
       const typename Mapping<dim>::InternalDataBase                  &internal_data,
       internal::FEValuesImplementation::MappingRelatedData<dim, dim> &output_data) const override
     {
-      (void)similarity;
       return MappingQ<dim>::fill_fe_values(cell,
                                            CellSimilarity::none,
                                            quadrature,

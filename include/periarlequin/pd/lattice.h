@@ -69,6 +69,10 @@ namespace PeriArlequin
     Point<dim>
     upper_corner() const;
 
+    /** The number of sites: the particles of pure PD on a box domain. */
+    types::particle_index
+    size() const;
+
   private:
     Point<dim> origin;
     double     dx;

@@ -224,6 +224,9 @@ namespace PeriArlequin
               const std::string                &value);
     types::particle_index
     n_global_particles() const;
+    /** The sites of the lattice over the domain's box (the particles of pure PD there). */
+    types::particle_index
+    n_lattice_sites() const;
     /** Family sizes summed over all particles (each bond counted from both ends). */
     std::size_t
     n_global_bonds() const;
