@@ -1,4 +1,5 @@
 #include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/base/vector_reductions.h>
 #include <periarlequin/coupling/arlequin_coupling.h>
 
 #include <cmath>
@@ -227,9 +228,9 @@ namespace PeriArlequin
     VectorType  g;
     space->initialize_vector(g);
     constraint(state.displacement, pd_zone->get_state().displacements(), g);
-    const double displacement_residual = g.l2_norm();
+    const double displacement_residual = l2_norm_in_fixed_chunks(g);
     constraint(state.velocity, pd_zone->get_state().velocities(), g);
-    return {displacement_residual, g.l2_norm()};
+    return {displacement_residual, l2_norm_in_fixed_chunks(g)};
   }
 
   template <int dim>

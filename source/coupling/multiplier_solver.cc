@@ -1,8 +1,7 @@
 #include <periarlequin/base/parallel_loops.h>
+#include <periarlequin/base/vector_reductions.h>
 #include <periarlequin/coupling/multiplier_solver.h>
 
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 
 namespace PeriArlequin
 {
@@ -64,12 +63,9 @@ namespace PeriArlequin
       inverse_diagonal.local_element(m) =
         free_rows.local_element(m) > 0 ? 1. / inverse_diagonal.local_element(m) : 0.;
     preconditioner.reinit(inverse_diagonal);
-    a_operator.vmult               = [this](VectorType &y, const VectorType &x) { vmult(y, x); };
-    a_operator.reinit_range_vector = [this](VectorType &v, const bool) {
-      this->space.initialize_vector(v);
-    };
-    a_operator.reinit_domain_vector = a_operator.reinit_range_vector;
-    exact_solve_prepared            = true;
+    for (VectorType *v : {&residual, &preconditioned_residual, &direction, &product})
+      space.initialize_vector(*v);
+    exact_solve_prepared = true;
   }
 
   template <int dim>
@@ -153,7 +149,7 @@ namespace PeriArlequin
       }
     free_rhs = rhs;
     free_rhs.scale(free_rows);
-    const double rhs_norm = free_rhs.l2_norm();
+    const double rhs_norm = l2_norm_in_fixed_chunks(free_rhs);
     if (rhs_norm == 0)
       lambda = 0.;
     else
@@ -178,20 +174,37 @@ namespace PeriArlequin
       lambda = previous_request_multipliers;
     else
       preconditioner.vmult(lambda, free_rhs);
-    const double         relative_tolerance = correction ? 1e-6 : 1e-12;
-    SolverControl        control(1000, relative_tolerance * rhs_norm, false, false);
-    SolverCG<VectorType> cg(control);
-    try
+    const double relative_tolerance = correction ? 1e-6 : 1e-12;
+    const double tolerance          = relative_tolerance * rhs_norm;
+    // Jacobi-preconditioned conjugate gradients, stopped on the residual norm; its dot
+    // products in fixed chunks (dot_in_fixed_chunks()), so the multipliers do not depend on
+    // the number of threads, to the bit.
+    vmult(product, lambda);
+    residual.equ(1., free_rhs);
+    residual.add(-1., product);
+    double residual_norm = l2_norm_in_fixed_chunks(residual);
+    double rz            = 0;
+    for (unsigned int k = 0; residual_norm > tolerance; ++k)
       {
-        cg.solve(a_operator, lambda, free_rhs, preconditioner);
-      }
-    catch (const SolverControl::NoConvergence &)
-      {
-        AssertThrow(false,
+        AssertThrow(k < 1000,
                     ExcMessage("The multiplier CG solve did not reach a relative residual of " +
-                               Utilities::to_string(relative_tolerance) + " in 1000 iterations."));
+                               Utilities::to_string(relative_tolerance) + " in 1000 iterations " +
+                               "(reached " + Utilities::to_string(residual_norm / rhs_norm) +
+                               ")."));
+        preconditioner.vmult(preconditioned_residual, residual);
+        const double rz_next = dot_in_fixed_chunks(residual, preconditioned_residual);
+        if (k == 0)
+          direction.equ(1., preconditioned_residual);
+        else
+          direction.sadd(rz_next / rz, 1., preconditioned_residual);
+        rz = rz_next;
+        vmult(product, direction);
+        const double step = rz / dot_in_fixed_chunks(direction, product);
+        lambda.add(step, direction);
+        residual.add(-step, product);
+        residual_norm = l2_norm_in_fixed_chunks(residual);
+        iterations    = k + 1;
       }
-    iterations = control.last_step();
   }
 
   template <int dim>

@@ -17,7 +17,10 @@
 // plate under 4 MPa, PD first on [0, 60] x [12.5, 27.5] mm only, the zone grown by the
 // damage-distance and strain criteria as the crack runs and branches (20 us; cells converted
 // at several growths, each rebuilding the particle structures, the FE zone and the coupling
-// on the threads).
+// on the threads). Last, a strict coupling whose multipliers (48,000 unknowns on the PD
+// nodes of two wide overlaps, more than 16,384 a rank on 2 ranks) are solved by conjugate
+// gradients: deal.II's vector reductions split such vectors among the threads and sum them in
+// one pass on one thread; the project's CG forms its dot products in fixed chunks instead.
 
 #include "coupled_cases.h"
 
@@ -29,13 +32,15 @@ namespace
   /**
    * Run @p parameters on 2 threads and on 1 (deal.II limited to one thread); the largest
    * relative difference of the histories. With @p many_rows, the overlap and the slave layer
-   * must hold more than 2000 PD nodes, several tasks of rows a rank.
+   * must hold more than 2000 PD nodes, several tasks of rows a rank; with
+   * @p multipliers_per_rank, the ranks more multiplier unknowns than that on average.
    */
   double
   threads_difference(const std::string &parameters,
                      const std::string &title,
-                     const std::string &active_column = "broken_bonds",
-                     const bool         many_rows     = true)
+                     const std::string &active_column        = "broken_bonds",
+                     const bool         many_rows            = true,
+                     const unsigned int multipliers_per_rank = 0)
   {
     auto two_threads = make_simulator<2>(parameters, MPI_COMM_WORLD);
     two_threads->run();
@@ -51,6 +56,11 @@ namespace
         check_above(title + ": overlap PD nodes", overlap_nodes, 2000);
         check_above(title + ": slave particles", slaves, 2000);
       }
+    if (multipliers_per_rank > 0)
+      check_above(title + ": multiplier unknowns a rank",
+                  two_threads->get_coupling()->n_multipliers() /
+                    Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+                  multipliers_per_rank);
     return history_difference(two_threads->get_energy_history(),
                               one_thread->get_energy_history(),
                               title);
@@ -108,6 +118,30 @@ main(int argc, char **argv)
             threads_difference(adaptive, "adaptive", "converted_cells", false),
             0.,
             0.);
+      const std::string wide_overlaps =
+        "set Dimension = 2\n"
+        "subsection Geometry\n  set Lower corner = -0.15, -0.05\n"
+        "  set Upper corner = 0.15, 0.05\n  set Subdivisions = 75, 25\nend\n"
+        "subsection Material\n  set Young's modulus = 69e9\n  set Poisson's ratio = 0.3\n"
+        "  set Density = 2700\nend\n"
+        "subsection Peridynamics\n  set Region = -0.01, -0.05 : 0.01, 0.05\n"
+        "  set Lattice spacing = 5e-4\n  set Horizon factor = 3.015\nend\n"
+        "subsection Coupling\n  set Method = strict\n  set Multiplier solver = cg\n"
+        "  set Overlap region = -0.04, -0.05 : -0.01, 0.05 ; 0.01, -0.05 : 0.04, 0.05\n"
+        "  set Finite element region = -0.15, -0.05 : -0.04, 0.05 ; 0.04, -0.05 : 0.15, 0.05\n"
+        "end\n"
+        "subsection Time\n  set Time step = 5e-8\n  set End time = 5e-7\nend\n"
+        "subsection Initial conditions\n  set Model = function\n  subsection function\n"
+        "    subsection Velocity\n"
+        "      set Function expression = 1e-2*sin(40*x)*cos(30*y); 1e-2*cos(50*x+y)\n"
+        "    end\n  end\nend\n"
+        "subsection Output\n  set Output interval = 0\n  set Energy interval = 1\n"
+        "  set Progress interval = 0\n  set Directory = test_output_wide_overlaps\nend\n";
+      check(
+        "strict, CG on 48,000 multipliers: 2 threads vs 1, largest relative difference",
+        threads_difference(wide_overlaps, "wide overlaps", "multiplier_iterations", false, 16384),
+        0.,
+        0.);
     },
     2);
 }

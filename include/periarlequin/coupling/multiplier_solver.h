@@ -5,7 +5,6 @@
 #include <periarlequin/coupling/multiplier_space.h>
 
 #include <deal.II/lac/diagonal_matrix.h>
-#include <deal.II/lac/linear_operator.h>
 
 #include <vector>
 
@@ -96,10 +95,11 @@ namespace PeriArlequin
     bool       exact_solve_prepared = false;
     bool       exact_on_request     = false;
     /** 1 for the multipliers with an equation, 0 where A has a zero row (all prescribed). */
-    VectorType                            free_rows;
-    VectorType                            free_rhs;
-    DiagonalMatrix<VectorType>            preconditioner;
-    LinearOperator<VectorType>            a_operator;
+    VectorType                 free_rows;
+    VectorType                 free_rhs;
+    DiagonalMatrix<VectorType> preconditioner;
+    /** The conjugate gradients' vectors: residual, preconditioned, direction, A direction. */
+    VectorType                            residual, preconditioned_residual, direction, product;
     VectorType                            fe_scratch;
     typename MultiplierSpace<dim>::Values overlap_values, overlap_values_2;
     unsigned int                          iterations = 0;
