@@ -205,7 +205,9 @@ namespace PeriArlequin
         record.repartitions      = repartitions;
         record.conversion_energy = conversion_energy_change();
         record.fe_work           = fe_zone ? fe_zone->external_work() : 0.;
-        record.pd_work           = pd_work;
+        record.equilibrium_force_scale =
+          static_solver ? static_solver->equilibrium_force_scale() : 0.;
+        record.pd_work = pd_work;
         if (energy_history)
           {
             record.history_names = energy_history->column_names();

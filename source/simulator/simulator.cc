@@ -1,4 +1,5 @@
 #include <periarlequin/simulator.h>
+#include <periarlequin/simulator/checkpoint_record.h>
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -130,9 +131,10 @@ namespace PeriArlequin
   Simulator<dim>::relax_to_equilibrium()
   {
     TimerOutput::Scope scope(timer, "static solve");
-    // A checkpoint of a quasi-static run holds an equilibrium: it counts among those found.
+    // A checkpoint of a quasi-static run holds an equilibrium: it counts among those found,
+    // with those its first part found.
     if (resumed && relaxation_steps == 0)
-      static_solver->remember_equilibrium();
+      static_solver->resume_equilibrium_force_scale(resumed->equilibrium_force_scale);
     if (pd_zone)
       pd_zone->suspend_fracture(true);
     Timer        clock;

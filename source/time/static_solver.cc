@@ -148,6 +148,21 @@ namespace PeriArlequin
   }
 
   template <int dim>
+  double
+  StaticSolver<dim>::equilibrium_force_scale() const
+  {
+    return largest_equilibrium_force;
+  }
+
+  template <int dim>
+  void
+  StaticSolver<dim>::resume_equilibrium_force_scale(const double scale)
+  {
+    largest_equilibrium_force = scale;
+    remember_equilibrium();
+  }
+
+  template <int dim>
   void
   StaticSolver<dim>::watch(const unsigned int iteration,
                            const double       residual,

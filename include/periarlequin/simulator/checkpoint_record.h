@@ -22,7 +22,7 @@ namespace PeriArlequin
   template <int dim>
   struct Simulator<dim>::CheckpointRecord
   {
-    std::string              format    = "PeriArlequin checkpoint 5";
+    std::string              format    = "PeriArlequin checkpoint 6";
     unsigned int             dimension = dim;
     std::vector<std::string> parameters;
     unsigned int             n_ranks = 0;
@@ -31,6 +31,9 @@ namespace PeriArlequin
     Region<dim>  pd_region;
     unsigned int converted_cells = 0, repartitions = 0;
     double       conversion_energy = 0, fe_work = 0;
+    /** The static solver's scale of the equilibria found (StaticSolver::equilibrium_force_scale()).
+     */
+    double equilibrium_force_scale = 0;
     /** The adaptive zone's running damage (all ranks), point after point, dim numbers each. */
     std::vector<double> running_damage;
     /** Each rank's share of the PD zone's external work [J]. */
@@ -49,8 +52,9 @@ namespace PeriArlequin
     serialize(Archive &archive, const unsigned int)
     {
       archive &format &dimension &parameters &n_ranks &step &pd_region &converted_cells
-        &repartitions &conversion_energy &fe_work &running_damage &pd_work &history_names
-          &history_rows &fe_records &pd_records &postprocessor_states &contact_state &files;
+        &repartitions &conversion_energy &fe_work &equilibrium_force_scale &running_damage &pd_work
+          &history_names &history_rows &fe_records &pd_records &postprocessor_states &contact_state
+            &files;
     }
   };
 

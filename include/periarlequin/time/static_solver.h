@@ -127,11 +127,24 @@ namespace PeriArlequin
 
     /**
      * Count the current state's applied forces among those of the equilibria found, the
-     * scale of later residuals: solve() does so at its end, and a run resumed from a
-     * checkpoint of an equilibrium before its first solve (collective).
+     * scale of later residuals: solve() does so at its end (collective).
      */
     void
     remember_equilibrium();
+
+    /** The largest |F_applied|^2 of the equilibria found so far, for checkpoints [N^2]. */
+    double
+    equilibrium_force_scale() const;
+
+    /**
+     * A run resumed from a checkpoint takes the scale of the equilibria its first part found
+     * (@p scale, equilibrium_force_scale() when it was written), then counts the restored
+     * equilibrium (collective): past the peak of a crack that runs, the restored state's own
+     * applied forces would be a smaller scale, so a tighter stopping criterion, than the run
+     * that did not stop had.
+     */
+    void
+    resume_equilibrium_force_scale(const double scale);
 
     /** The step of the explicit operations a solve is made of [s]. */
     double
