@@ -209,8 +209,18 @@ namespace PeriArlequin
       initialize_vector(*v);
     for (VectorType *v : {&state.displacement, &state.velocity, &state.acceleration})
       v->update_ghost_values();
-    prescribed = prescribed_dofs(*problem_data);
+    find_prescribed_dofs(*problem_data);
     nodal_force_weights.clear();
+  }
+
+  template <int dim>
+  void
+  FEZone<dim>::find_prescribed_dofs(const ProblemData<dim> &data)
+  {
+    prescribed = prescribed_dofs(data);
+    is_prescribed_dof.assign(locally_owned_dofs.n_elements(), false);
+    for (const auto &dof : prescribed)
+      is_prescribed_dof[dof.local_index] = true;
   }
 
   template <int dim>

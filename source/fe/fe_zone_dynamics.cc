@@ -56,7 +56,7 @@ namespace PeriArlequin
                           &previous_displacement,
                           &interface_force})
       initialize_vector(*v);
-    prescribed  = prescribed_dofs(data);
+    find_prescribed_dofs(data);
     tracks_work = data.has_body_force || data.has_tractions() ||
                   Utilities::MPI::logical_or(!prescribed.empty(), communicator);
     work = 0;
@@ -336,20 +336,18 @@ namespace PeriArlequin
   std::pair<double, double>
   FEZone<dim>::relaxation_step_sums() const
   {
-    double     sums[2] = {0, 0};
-    const auto add     = [&](const unsigned int k, const double sign) {
-      const double m = mass.local_element(k);
-      const double du =
-        state.displacement.local_element(k) - relaxation_displacement.local_element(k);
-      const double da =
-        state.acceleration.local_element(k) - relaxation_acceleration.local_element(k);
-      sums[0] -= sign * m * du * da;
-      sums[1] += sign * m * du * du;
-    };
+    double sums[2] = {0, 0};
     for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
-      add(k, 1.);
-    for (const auto &dof : prescribed)
-      add(dof.local_index, -1.);
+      if (!is_prescribed_dof[k])
+        {
+          const double m = mass.local_element(k);
+          const double du =
+            state.displacement.local_element(k) - relaxation_displacement.local_element(k);
+          const double da =
+            state.acceleration.local_element(k) - relaxation_acceleration.local_element(k);
+          sums[0] -= m * du * da;
+          sums[1] += m * du * du;
+        }
     Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
     return {sums[0], sums[1]};
   }
@@ -358,21 +356,20 @@ namespace PeriArlequin
   std::pair<double, double>
   FEZone<dim>::squared_force_norms() const
   {
+    // The prescribed DoFs left out, not added and taken off again: their accelerations are
+    // those of the motion, which would take digits off the residual.
     double sums[2] = {0, 0};
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       {
-        const double residual = mass.local_element(i) * state.acceleration.local_element(i);
-        sums[0] += residual * residual;
+        if (!is_prescribed_dof[i])
+          {
+            const double residual = mass.local_element(i) * state.acceleration.local_element(i);
+            sums[0] += residual * residual;
+          }
         sums[1] += applied_force.local_element(i) * applied_force.local_element(i);
       }
-    for (const auto &dof : prescribed)
-      {
-        const double residual =
-          mass.local_element(dof.local_index) * state.acceleration.local_element(dof.local_index);
-        sums[0] -= residual * residual;
-      }
     Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
-    return {std::max(sums[0], 0.), sums[1]};
+    return {sums[0], sums[1]};
   }
 
   template <int dim>
@@ -399,9 +396,8 @@ namespace PeriArlequin
     };
     double sum = 0;
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      sum += term(i);
-    for (const auto &dof : prescribed)
-      sum -= term(dof.local_index);
+      if (!is_prescribed_dof[i])
+        sum += term(i);
     return Utilities::MPI::sum(sum, communicator);
   }
 

@@ -571,20 +571,17 @@ namespace PeriArlequin
     const auto u       = state.displacements();
     const auto a       = state.accelerations();
     double     sums[2] = {0, 0};
-    const auto add     = [&](const unsigned int i, const unsigned int d, const double sign) {
+    const auto add     = [&](const unsigned int i, const unsigned int d) {
       const double du = u[i][d] - relaxation_displacement[i][d];
       const double da = a[i][d] - relaxation_acceleration[i][d];
-      sums[0] -= sign * particle_mass(i) * du * da;
-      sums[1] += sign * particle_mass(i) * du * du;
+      sums[0] -= particle_mass(i) * du * da;
+      sums[1] += particle_mass(i) * du * du;
     };
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       if (!slave[i])
         for (unsigned int d = 0; d < dim; ++d)
-          add(i, d, 1.);
-    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
-      if (!slave[i])
-        add(i, d, -1.);
-    });
+          if (!prescribed.prescribes(i, d))
+            add(i, d);
     Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
     return {sums[0], sums[1]};
   }
@@ -593,22 +590,24 @@ namespace PeriArlequin
   std::pair<double, double>
   PDZone<dim>::squared_force_norms() const
   {
-    // A slave's force acts on the FE nodes, where the FE zone counts it.
-    const auto a        = state.accelerations();
-    double     sums[2]  = {0, 0};
-    const auto residual = [&](const unsigned int i) {
-      return slave[i] ? Tensor<1, dim>() : particle_mass(i) * a[i];
-    };
+    // A slave's force acts on the FE nodes, where the FE zone counts it. The prescribed
+    // components are left out, not added and taken off again: their accelerations are those
+    // of the motion, which would take digits off the residual (and differ in a resumed run).
+    const auto a       = state.accelerations();
+    double     sums[2] = {0, 0};
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       {
-        sums[0] += residual(i).norm_square();
+        if (!slave[i])
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!prescribed.prescribes(i, d))
+              {
+                const double residual = particle_mass(i) * a[i][d];
+                sums[0] += residual * residual;
+              }
         sums[1] += applied_force[i].norm_square();
       }
-    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
-      sums[0] -= residual(i)[d] * residual(i)[d];
-    });
     Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
-    return {std::max(sums[0], 0.), sums[1]};
+    return {sums[0], sums[1]};
   }
 
   template <int dim>
@@ -638,11 +637,9 @@ namespace PeriArlequin
     double     sum = 0;
     for (unsigned int i = 0; i < ghosts.n_owned(); ++i)
       if (!slave[i])
-        sum += particle_mass(i) * a[i].norm_square();
-    prescribed.for_each_component([&](const unsigned int i, const unsigned int d) {
-      if (!slave[i])
-        sum -= particle_mass(i) * a[i][d] * a[i][d];
-    });
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!prescribed.prescribes(i, d))
+            sum += particle_mass(i) * a[i][d] * a[i][d];
     return Utilities::MPI::sum(sum, communicator);
   }
 

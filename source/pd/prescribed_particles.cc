@@ -6,6 +6,21 @@
 
 namespace PeriArlequin
 {
+  namespace
+  {
+    /** Bit d for each prescribed component d, and bit 7: the particle is held. */
+    template <std::size_t n>
+    std::uint8_t
+    component_bits(const std::array<bool, n> &components)
+    {
+      std::uint8_t bits = 0x80;
+      for (unsigned int d = 0; d < n; ++d)
+        if (components[d])
+          bits |= std::uint8_t(1u << d);
+      return bits;
+    }
+  } // namespace
+
   template <int dim>
   PrescribedParticles<dim>::PrescribedParticles(const Parameters::Peridynamics<dim> &parameters)
     : parameters(parameters)
@@ -17,7 +32,7 @@ namespace PeriArlequin
                                    const unsigned int          n_owned)
   {
     particles.clear();
-    is_prescribed.assign(n_owned, false);
+    held_components.assign(n_owned, 0);
     if (parameters.prescribed.empty())
       return;
     // The region tests on the threads (every particle of a zone after each growth); the
@@ -48,7 +63,7 @@ namespace PeriArlequin
                                           region.prescribes_velocity,
                                           positions[i],
                                           2 * dim + r));
-        is_prescribed[i] = true;
+        held_components[i] = component_bits(components);
       }
   }
 
@@ -60,10 +75,10 @@ namespace PeriArlequin
                                 const std::array<bool, dim> &components,
                                 const unsigned int           boundary_id)
   {
-    if (is_prescribed[i])
+    if (held_components[i] != 0)
       return;
     particles.push_back(make_particle(i, &function, components, false, position, boundary_id));
-    is_prescribed[i] = true;
+    held_components[i] = component_bits(components);
   }
 
   template <int dim>
@@ -92,7 +107,7 @@ namespace PeriArlequin
   bool
   PrescribedParticles<dim>::contains(const unsigned int i) const
   {
-    return is_prescribed[i];
+    return held_components[i] != 0;
   }
 
   template <int dim>

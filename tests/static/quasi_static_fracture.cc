@@ -33,7 +33,8 @@
  * 6. Checkpoint and restart: the run stopped at increment 9 (a checkpoint at its end) and
  *    resumed to the end gives the history of the run that did not stop: the same bonds
  *    broken at the same increments, grip forces and work within 1e-6. The restored state is
- *    the saved one to the bit, but the restarted force pass sums in another order, and the
+ *    the saved one to the bit, but the resumed run's first force evaluation differs in the
+ *    last bits from the uninterrupted run's at the same displacements (not traced), and the
  *    conjugate gradients of the static solves (automatic here: pure PD) carry that round-off
  *    into their step lengths, so each solve stops at another point within its tolerance
  *    (1e-5 of the grip force): measured 3.4e-8 (the relaxation, which contracts such

@@ -291,6 +291,9 @@ namespace PeriArlequin
     /** The locally owned DoFs whose displacement is prescribed by a boundary condition. */
     std::vector<PrescribedDoF>
     prescribed_dofs(const ProblemData<dim> &data) const;
+    /** prescribed and is_prescribed_dof from the boundary conditions of @p data. */
+    void
+    find_prescribed_dofs(const ProblemData<dim> &data);
 
     /**
      * Largest stable step of the explicit central-difference/velocity-Verlet scheme,
@@ -376,6 +379,8 @@ namespace PeriArlequin
     VectorType                 search_direction;
     VectorType                 interface_force;
     std::vector<PrescribedDoF> prescribed;
+    /** Per owned DoF: is it one of prescribed (the sums over the free DoFs skip it)? */
+    std::vector<bool> is_prescribed_dof;
     /** Velocities and accelerations of the prescribed DoFs at the current time. */
     std::vector<double> prescribed_velocity;
     std::vector<double> prescribed_acceleration;

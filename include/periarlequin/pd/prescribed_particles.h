@@ -8,6 +8,7 @@
 #include <deal.II/base/function.h>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace PeriArlequin
@@ -45,6 +46,12 @@ namespace PeriArlequin
     /** Does a prescribed region or boundary layer hold owned particle @p i? */
     bool
     contains(const unsigned int i) const;
+    /** Is component @p d of owned particle @p i prescribed? */
+    bool
+    prescribes(const unsigned int i, const unsigned int d) const
+    {
+      return (held_components[i] >> d) & 1u;
+    }
 
     /** Does no rank hold a prescribed particle? (collective) */
     bool
@@ -116,8 +123,11 @@ namespace PeriArlequin
 
     const Parameters::Peridynamics<dim> &parameters;
     std::vector<Particle>                particles;
-    /** Is owned particle i prescribed? */
-    std::vector<bool> is_prescribed;
+    /**
+     * Per owned particle: bit d set if component d is prescribed, bit 7 if a region or a
+     * boundary layer holds it (0: free).
+     */
+    std::vector<std::uint8_t> held_components;
   };
 } // namespace PeriArlequin
 
