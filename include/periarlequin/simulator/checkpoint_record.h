@@ -31,8 +31,7 @@ namespace PeriArlequin
     Region<dim>  pd_region;
     unsigned int converted_cells = 0, repartitions = 0;
     double       conversion_energy = 0, fe_work = 0;
-    /** The static solver's scale of the equilibria found (StaticSolver::equilibrium_force_scale()).
-     */
+    /** StaticSolver::equilibrium_force_scale() when the checkpoint was written [N^2]. */
     double equilibrium_force_scale = 0;
     /** The adaptive zone's running damage (all ranks), point after point, dim numbers each. */
     std::vector<double> running_damage;
