@@ -218,6 +218,10 @@ namespace PeriArlequin
   FEZone<dim>::find_prescribed_dofs(const ProblemData<dim> &data)
   {
     prescribed = prescribed_dofs(data);
+    // Their motion is evaluated by impose_prescribed_motion(); until then (a run resumed from
+    // a checkpoint, DoFs renumbered) they are at rest, not given another numbering's values.
+    prescribed_velocity.assign(prescribed.size(), 0.);
+    prescribed_acceleration.assign(prescribed.size(), 0.);
     is_prescribed_dof.assign(locally_owned_dofs.n_elements(), false);
     for (const auto &dof : prescribed)
       is_prescribed_dof[dof.local_index] = true;
