@@ -322,6 +322,12 @@ namespace PeriArlequin
     /** After the zones or their partition changed: contact and coupling built again. */
     void
     rebuild_coupling();
+    /**
+     * What to change when damage reaches the overlap of an adaptive zone: its growth could
+     * not act, and an FE strain past the critical stretch (check_fe_strain()) may be why.
+     */
+    std::string
+    adaptive_zone_advice() const;
     /** Output directory, energy history file and FE output writer. */
     void
     prepare_output();
@@ -378,8 +384,10 @@ namespace PeriArlequin
     std::unique_ptr<CheckpointRecord> resumed;
     std::string                       resume_directory;
     double                            last_checkpoint_wall_time = 0.;
-    /** The largest FE strain ratio check_fe_strain() warned about. */
-    double warned_strain_ratio = 0.;
+    /** The largest FE strain ratio check_fe_strain() warned about, when and where. */
+    double     warned_strain_ratio = 0.;
+    double     warned_strain_time  = 0.;
+    Point<dim> warned_strain_place;
     /** While resuming: each cell's owner in the checkpointed run (by active cell index). */
     std::vector<unsigned int> saved_owner;
     /** Cell weights that replace the PD ones while not empty (restore_saved_partition()). */

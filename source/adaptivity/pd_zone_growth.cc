@@ -146,6 +146,22 @@ namespace PeriArlequin
   {}
 
   template <int dim>
+  bool
+  PDZoneGrowth<dim>::uses_criterion(const std::string &name) const
+  {
+    const std::vector<std::string> names =
+      Utilities::split_string_list(parameters.conversion_criterion);
+    return std::find(names.begin(), names.end(), name) != names.end();
+  }
+
+  template <int dim>
+  double
+  PDZoneGrowth<dim>::trigger_distance() const
+  {
+    return context.trigger_distance;
+  }
+
+  template <int dim>
   void
   PDZoneGrowth<dim>::initialize(const FEZone<dim>      &fe_zone,
                                 PDZone<dim>            &pd_zone,

@@ -105,15 +105,18 @@ namespace PeriArlequin
         Utilities::MPI::max(first == global_first ? ghosts.reference_positions()[local][d] :
                                                     -std::numeric_limits<double>::max(),
                             communicator);
-    std::ostringstream message;
-    message << "Damage reached the overlap at t = " << time << " s: a bond of the particle at ("
-            << position << ") m, one bond away from the overlap, broke. The coupling assumes "
-            << "an intact continuum in the overlap and the FE zone, so the run stops here. "
-            << "Enlarge the PD region around the crack path (Peridynamics/Region, "
-            << "Coupling/Overlap region and Coupling/Finite element region), or let it grow "
-            << "with the crack (Adaptive PD zone; if it does already, a larger damage "
-            << "distance or a smaller check interval).";
-    AssertThrow(false, ExcMessage(message.str()));
+    std::ostringstream statement;
+    statement << "Damage reached the overlap at t = " << time << " s: a bond of the particle at ("
+              << position << ") m, one bond away from the overlap, broke. The coupling assumes "
+              << "an intact continuum in the overlap and the FE zone, so the run stops here.";
+    AssertThrow(false,
+                ExcDamageNearOverlap<dim>(
+                  time,
+                  position,
+                  statement.str(),
+                  "Enlarge the PD region around the crack path (Peridynamics/Region, "
+                  "Coupling/Overlap region and Coupling/Finite element region), or let it grow "
+                  "with the crack (Adaptive PD zone/Conversion criterion)."));
   }
 
   template <int dim>

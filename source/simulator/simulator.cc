@@ -280,12 +280,25 @@ namespace PeriArlequin
   void
   Simulator<dim>::advance()
   {
-    if (time_parameters.integration == Parameters::Integration::quasi_static)
-      solve_increment();
-    else
-      integrator->step();
-    if (zone_growth)
-      grow_pd_zone();
+    try
+      {
+        if (time_parameters.integration == Parameters::Integration::quasi_static)
+          solve_increment();
+        else
+          integrator->step();
+        if (zone_growth)
+          grow_pd_zone();
+      }
+    catch (const ExcDamageNearOverlap<dim> &stop)
+      {
+        if (!zone_growth)
+          throw;
+        AssertThrow(false,
+                    ExcDamageNearOverlap<dim>(stop.time,
+                                              stop.position,
+                                              stop.statement,
+                                              adaptive_zone_advice()));
+      }
     const unsigned int interval = coupling_parameters.strain_check_interval;
     if (interval > 0 && get_step_number() % interval == 0)
       check_fe_strain();
@@ -308,7 +321,6 @@ namespace PeriArlequin
     const double ratio  = global / critical;
     if (ratio < 1. || ratio < 1.1 * warned_strain_ratio)
       return ratio;
-    warned_strain_ratio = ratio;
     // The place from the lowest rank that holds the largest strain.
     const unsigned int rank =
       Utilities::MPI::min(local == global ? Utilities::MPI::this_mpi_process(communicator) :
@@ -318,6 +330,9 @@ namespace PeriArlequin
       Utilities::MPI::broadcast(communicator,
                                 local == global ? where[largest - strain.begin()] : Point<dim>(),
                                 rank);
+    warned_strain_ratio = ratio;
+    warned_strain_time  = get_time();
+    warned_strain_place = place;
     pcout << "Warning: at t = " << get_time() << " s the FE field's strain reaches " << ratio
           << " times the critical stretch " << critical << " at (" << place
           << ") m. The FE zone cannot break: PD might crack there, this run cannot. Put that "
@@ -355,6 +370,36 @@ namespace PeriArlequin
             << std::endl;
     rebalance(zone_growth->imbalance_tolerance());
     return n_cells;
+  }
+
+  template <int dim>
+  std::string
+  Simulator<dim>::adaptive_zone_advice() const
+  {
+    std::ostringstream advice;
+    advice << "The adaptive zone grows ahead of running cracks (damage within "
+           << zone_growth->trigger_distance()
+           << " m of an FE cell converts the cells around it in the step it appears), so this "
+              "damage started next to the overlap, not in a crack that ran into it.";
+    if (warned_strain_ratio >= 1.)
+      advice << " The FE field's strain reached " << warned_strain_ratio
+             << " times the critical stretch at t = " << warned_strain_time << " s at ("
+             << warned_strain_place
+             << ") m: the FE zone cannot break, so the load that PD would relieve by cracking "
+                "there stays in the body and can break bonds where the PD zone meets it.";
+    // The start-up notes name settings that can cause this (new particles that do not
+    // settle, a criterion that misses cracks away from damage).
+    const std::vector<std::string> &notes = zone_growth->get_notes();
+    for (const std::string &note : notes)
+      advice << " Note: " << note;
+    if (!zone_growth->uses_criterion("strain") && notes.empty())
+      advice << " Add the strain criterion (Adaptive PD zone/Conversion criterion = damage "
+                "distance, strain): it converts the cells whose FE strain nears the critical "
+                "stretch before bonds break there.";
+    else if (zone_growth->uses_criterion("strain"))
+      advice << " Let the strain criterion convert earlier (a lower Adaptive PD zone/strain/"
+                "Fraction of critical stretch), or widen the band (Coupling/Overlap width).";
+    return advice.str();
   }
 
   template <int dim>

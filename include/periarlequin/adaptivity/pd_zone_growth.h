@@ -101,6 +101,17 @@ namespace PeriArlequin
                const double            time_step,
                const bool              dynamic);
 
+    /** Is @p name among the conversion criteria? */
+    bool
+    uses_criterion(const std::string &name) const;
+
+    /**
+     * Damage this near an FE cell converts it in the step it appears (set by initialize())
+     * [m].
+     */
+    double
+    trigger_distance() const;
+
     /** Is the criterion asked after step @p step (every Check interval steps)? */
     bool
     due(const unsigned int step) const;

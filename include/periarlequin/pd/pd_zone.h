@@ -38,6 +38,41 @@ namespace PeriArlequin
   class Contact;
 
   /**
+   * A bond next to the overlap broke (thrown on every rank): when, where, and what to do
+   * about it. The statement alone is kept apart, so that a caller who knows more (an
+   * adaptive zone: why its growth could not act) can give its own advice.
+   */
+  template <int dim>
+  class ExcDamageNearOverlap : public ExceptionBase
+  {
+  public:
+    ExcDamageNearOverlap(const double       time,
+                         const Point<dim>  &position,
+                         const std::string &statement,
+                         const std::string &advice)
+      : time(time)
+      , position(position)
+      , statement(statement)
+      , advice(advice)
+    {}
+
+    void
+    print_info(std::ostream &out) const override
+    {
+      out << "    " << statement << ' ' << advice << std::endl;
+    }
+
+    /** When the bond broke [s]. */
+    double time;
+    /** The end of the bond next to the overlap (reference position) [m]. */
+    Point<dim> position;
+    /** What happened. */
+    std::string statement;
+    /** What to change. */
+    std::string advice;
+  };
+
+  /**
    * The peridynamic particle zone: a regular lattice of spacing dx filling a union of boxes,
    * held in a Particles::ParticleHandler on the simulation's triangulation at the reference
    * positions (total Lagrangian: particles never move between cells). The owner of a
