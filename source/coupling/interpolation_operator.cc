@@ -45,14 +45,15 @@ namespace PeriArlequin
             const auto &fe = cell->get_fe();
             if (fe.n_dofs_per_cell() == 0)
               {
-                std::ostringstream where;
-                where << pd_zone.reference_positions()[i];
-                AssertThrow(false,
-                            ExcMessage("The PD particle at " + where.str() +
-                                       " is coupled to the FE field but its cell has no FE "
-                                           "unknowns: the overlap and the slave layer must lie in "
-                                           "FE cells (cells whose centre is outside "
-                                           "Peridynamics/Region)."));
+                const auto         corners = cell->bounding_box().get_boundary_points();
+                std::ostringstream message;
+                message << "The PD particle at (" << pd_zone.reference_positions()[i]
+                        << ") m is coupled to the FE field, but its cell, from (" << corners.first
+                        << ") to (" << corners.second
+                        << ") m, has its centre in Peridynamics/Region and so no FE unknowns: "
+                               "the overlap and the slave layer must lie in FE cells. Put the "
+                               "boundary of Peridynamics/Region on faces of the cells.";
+                AssertThrow(false, ExcMessage(message.str()));
               }
             // The FE zone's element is dim copies of one scalar element: node j of the scalar
             // element carries the DoF of component c of copy c.
