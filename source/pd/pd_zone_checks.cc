@@ -110,9 +110,7 @@ namespace PeriArlequin
               << position << ") m, one bond away from the overlap, broke. The coupling assumes "
               << "an intact continuum in the overlap and the FE zone, so the run stops here.";
     AssertThrow(false,
-                ExcDamageNearOverlap<dim>(
-                  time,
-                  position,
+                ExcDamageNearOverlap(
                   statement.str(),
                   "Enlarge the PD region around the crack path (Peridynamics/Region, "
                   "Coupling/Overlap region and Coupling/Finite element region), or let it grow "

@@ -289,15 +289,11 @@ namespace PeriArlequin
         if (zone_growth)
           grow_pd_zone();
       }
-    catch (const ExcDamageNearOverlap<dim> &stop)
+    catch (const ExcDamageNearOverlap &stop)
       {
         if (!zone_growth)
           throw;
-        AssertThrow(false,
-                    ExcDamageNearOverlap<dim>(stop.time,
-                                              stop.position,
-                                              stop.statement,
-                                              adaptive_zone_advice()));
+        AssertThrow(false, ExcDamageNearOverlap(stop.statement, adaptive_zone_advice()));
       }
     const unsigned int interval = coupling_parameters.strain_check_interval;
     if (interval > 0 && get_step_number() % interval == 0)

@@ -38,21 +38,15 @@ namespace PeriArlequin
   class Contact;
 
   /**
-   * A bond next to the overlap broke (thrown on every rank): when, where, and what to do
-   * about it. The statement alone is kept apart, so that a caller who knows more (an
-   * adaptive zone: why its growth could not act) can give its own advice.
+   * A bond next to the overlap broke (thrown on every rank). What happened (time and place)
+   * is kept apart from what to do about it, so that a caller who knows more (an adaptive
+   * zone: why its growth could not act) can give its own advice.
    */
-  template <int dim>
   class ExcDamageNearOverlap : public ExceptionBase
   {
   public:
-    ExcDamageNearOverlap(const double       time,
-                         const Point<dim>  &position,
-                         const std::string &statement,
-                         const std::string &advice)
-      : time(time)
-      , position(position)
-      , statement(statement)
+    ExcDamageNearOverlap(const std::string &statement, const std::string &advice)
+      : statement(statement)
       , advice(advice)
     {}
 
@@ -62,11 +56,7 @@ namespace PeriArlequin
       out << "    " << statement << ' ' << advice << std::endl;
     }
 
-    /** When the bond broke [s]. */
-    double time;
-    /** The end of the bond next to the overlap (reference position) [m]. */
-    Point<dim> position;
-    /** What happened. */
+    /** What happened, when and where. */
     std::string statement;
     /** What to change. */
     std::string advice;
