@@ -56,9 +56,9 @@ namespace PeriArlequin
 
     /**
      * Visit the blocks of the runs @p range of @p layout chunk by chunk: @p visit(block) for
-     * each run, half offset and chunk of the block's slots (StencilLayout::block_slots, or
-     * force_block_slots for the @p force_pass), in this order: the slots outside them would
-     * add zeros, or terms nobody reads.
+     * each run, half offset and chunk of the block's slots that the @p pass visits
+     * (StencilLayout::pass_slots()), in this order: the slots outside them would add zeros,
+     * or terms nobody reads.
      */
     template <int dim, typename Visitor>
     inline __attribute__((always_inline)) void
@@ -66,9 +66,9 @@ namespace PeriArlequin
                    const std::vector<typename BondFamilies<dim>::StencilEntry> &stencil,
                    const RunRange                                              &range,
                    const Visitor                                               &visit,
-                   const bool                                                   force_pass = false)
+                   const typename StencilLayout<dim>::Pass                      pass)
     {
-      const auto &bounds = force_pass ? layout.force_block_slots : layout.block_slots;
+      const auto &bounds = layout.pass_slots(pass);
       Block<dim>  block;
       for (unsigned int r = range.first; r < range.end; ++r)
         for (unsigned int h = 0; h < layout.half_offsets.size(); ++h)
@@ -191,7 +191,8 @@ namespace PeriArlequin
           for (unsigned int q = 0; q < block.n; ++q)
             chunk[q] = block.mask[q] ? weighted : 0.;
           add_to_ends(volume + block.first, volume + block.first + block.delta, chunk, 1., block.n);
-        });
+        },
+        StencilLayout<dim>::Pass::intact_volume);
     }
 
     /**
@@ -283,7 +284,8 @@ namespace PeriArlequin
                       breaking.bonds->push_back({b.first + q, b.half});
                 }
             }
-        });
+        },
+        StencilLayout<dim>::Pass::dilatation);
     }
 
     /**
@@ -397,7 +399,7 @@ namespace PeriArlequin
           for (int q = 0; q < n; ++q)
             deviatoric_i[q] += values_i[q];
         },
-        true);
+        StencilLayout<dim>::Pass::force);
     }
 
     // One instance per dimension and instruction set.
@@ -465,6 +467,30 @@ namespace PeriArlequin
           1);
     }
 
+    /**
+     * @p visit(i) for the held particles whose values the passes read: those within reach of
+     * the layout's window if it has one (StencilLayout::window_reach()), else all @p n_held;
+     * on the threads.
+     */
+    template <int dim, typename Visitor>
+    void
+    for_each_read_particle(const StencilLayout<dim> &layout,
+                           const unsigned int        n_held,
+                           const Visitor            &visit)
+    {
+      const auto &reach = layout.window_reach();
+      if (!layout.has_window())
+        for_each_subrange(n_held, [&](const unsigned int first, const unsigned int end) {
+          for (unsigned int i = first; i < end; ++i)
+            visit(i);
+        });
+      else
+        for_each_subrange(reach.size(), [&](const unsigned int first, const unsigned int end) {
+          for (unsigned int k = first; k < end; ++k)
+            visit(reach[k]);
+        });
+    }
+
     /** Resize @p values to @p n entries, zero where new (stale entries stay finite). */
     void
     fit(std::vector<double> &values, const std::size_t n)
@@ -481,10 +507,9 @@ namespace PeriArlequin
   {
     const std::size_t n_slots = layout.n_slots();
     fit(box_displacement, dim * n_slots);
-    for_each_subrange(layout.slot.size(), [&](const unsigned int first, const unsigned int end) {
-      for (unsigned int i = first; i < end; ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
+    for_each_read_particle(layout, layout.slot.size(), [&](const unsigned int i) {
+      for (unsigned int d = 0; d < dim; ++d)
+        box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
     });
   }
 
@@ -560,6 +585,8 @@ namespace PeriArlequin
     for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
+          if (!layout.in_window(i, StencilLayout<dim>::Pass::dilatation))
+            continue;
           const std::size_t s     = layout.slot[i];
           const double      theta = c * box_moment[s] / bonds.weighted_volume[i];
           scalars[2 * i]          = theta;
@@ -581,10 +608,9 @@ namespace PeriArlequin
     const std::size_t n_slots = layout.n_slots();
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     fit(box_coefficients, 3 * n_slots);
-    for_each_subrange(bonds.n_total, [&](const unsigned int first, const unsigned int end) {
-      for (unsigned int i = first; i < end; ++i)
-        for (unsigned int m = 0; m < 3; ++m)
-          box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
+    for_each_read_particle(layout, bonds.n_total, [&](const unsigned int i) {
+      for (unsigned int m = 0; m < 3; ++m)
+        box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
     });
     gather_displacements(layout, u);
     fill_zeros(box_force, dim * n_slots);
@@ -601,6 +627,8 @@ namespace PeriArlequin
     for_each_subrange(bonds.n_owned, [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
         {
+          if (!layout.in_window(i, StencilLayout<dim>::Pass::force))
+            continue;
           const std::size_t s = layout.slot[i];
           for (unsigned int d = 0; d < dim; ++d)
             force_density[i][d] = box_force[d * n_slots + s];

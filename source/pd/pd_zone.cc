@@ -155,23 +155,29 @@ namespace PeriArlequin
     };
     const std::vector<bool>                                      no_fail = unbreakable_particles();
     std::optional<typename BondFamilies<dim>::PreviousNumbering> previous;
+    changed_by_growth.clear();
+    growth_changes_known  = false;
+    growth_window_pending = false;
     if (before)
       {
         const unsigned int n_owned = ghosts.n_owned();
         previous.emplace();
         previous->owned_index.assign(n_owned, numbers::invalid_unsigned_int);
         previous->touched.assign(ghosts.n_total(), true);
+        changed_by_growth.assign(ghosts.n_total(), true);
         bool all_held = true;
         for (unsigned int p = 0; p < before->ids.size(); ++p)
           if (const unsigned int i = ghosts.local_index(before->ids[p]);
               i != numbers::invalid_unsigned_int)
             {
               previous->touched[i] = no_fail[i] != before->no_fail[p];
+              changed_by_growth[i] = previous->touched[i] || alpha[i] != before->alpha[p];
               if (i < n_owned)
                 previous->owned_index[i] = p;
             }
           else
             all_held = false;
+        growth_changes_known = all_held;
         // A particle that left would change families that no new particle touches: keep none.
         if (!all_held)
           previous.reset();

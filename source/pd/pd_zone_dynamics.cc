@@ -16,8 +16,41 @@ namespace PeriArlequin
   void
   PDZone<dim>::compute_internal_forces()
   {
+    open_growth_window();
     update_ghost_displacements();
     evaluate_model();
+    bonds.clear_window();
+  }
+
+  template <int dim>
+  void
+  PDZone<dim>::open_growth_window()
+  {
+    bonds.clear_window();
+    // Pending on every rank or on none (extend() and predict() are collective).
+    if (!growth_window_pending)
+      return;
+    growth_window_pending  = false;
+    evaluated_after_growth = ghosts.n_owned();
+    const bool breaks_anywhere =
+      fracture && !fracture_suspended && !(fracture->critical_stretch() > 0);
+    if (contact || breaks_anywhere ||
+        Utilities::MPI::min(growth_changes_known ? 1u : 0u, communicator) == 0)
+      return;
+    // The scalars change within a bond of a changed particle, the forces within a bond of a
+    // changed scalar (a ghost's, from its owner).
+    const unsigned int              n_owned = ghosts.n_owned(), n_total = ghosts.n_total();
+    const std::vector<std::uint8_t> scalars_changed = bonds.owned_within_reach(changed_by_growth);
+    std::vector<double>             flags(n_total, 0.);
+    std::copy(scalars_changed.begin(), scalars_changed.end(), flags.begin());
+    ghosts.update_ghosts(make_array_view(flags), 1);
+    const std::vector<std::uint8_t> forces_changed =
+      bonds.owned_within_reach(std::vector<bool>(flags.begin(), flags.end()));
+    std::vector<std::uint8_t> window(n_total, 0);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      window[i] = scalars_changed[i] | (forces_changed[i] << 1);
+    evaluated_after_growth = std::count(forces_changed.begin(), forces_changed.end(), 1);
+    bonds.restrict_to_window(std::move(window));
   }
 
   template <int dim>
@@ -75,6 +108,8 @@ namespace PeriArlequin
   void
   PDZone<dim>::predict(const double dt)
   {
+    // The particles move: what a growth carried over no longer holds.
+    growth_window_pending = false;
     const auto u = state.displacements(), v = state.velocities();
     const auto a = state.accelerations();
     for_each_subrange(ghosts.n_owned(), [&](const unsigned int first, const unsigned int end) {
@@ -120,6 +155,7 @@ namespace PeriArlequin
   void
   PDZone<dim>::compute_forces(const double time)
   {
+    open_growth_window();
     update_ghost_displacements();
     // A critical stretch is tested where the model forms the extensions for its scalars,
     // which then see the broken bonds; a criterion that reads the scalars gets them for these
@@ -161,6 +197,7 @@ namespace PeriArlequin
     if (checks_overlap)
       check_damage_near_overlap(time, broken);
     evaluate_model(scalars_current);
+    bonds.clear_window();
   }
 
   template <int dim>

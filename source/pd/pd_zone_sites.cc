@@ -208,9 +208,13 @@ namespace PeriArlequin
     const std::vector<Tensor<1, dim>>        old_applied_force  = applied_force;
     const std::vector<Tensor<1, dim>>        old_settling_force = settling_force;
     const std::vector<double>                old_settling_start = settling_start;
+    const std::vector<Tensor<1, dim>>        old_force_density  = force_density;
+    const std::vector<double>                old_energy_density = energy_density;
+    const std::vector<double>                old_scalars        = model_scalars;
     const auto                               broken             = bonds.broken_bonds(old_ids_view);
     const HeldBefore                         held_before{{old_ids_view.begin(), old_ids_view.end()},
-                                 unbreakable_particles()};
+                                 unbreakable_particles(),
+                                 alpha};
 
     for ([[maybe_unused]] const Point<dim> &x : ghosts.reference_positions())
       Assert(grown_extent(x), ExcMessage("PDZone::extend(): the extent must only grow."));
@@ -224,6 +228,7 @@ namespace PeriArlequin
     build_particle_structures(broken, &held_before);
 
     std::vector<unsigned int> previous(ghosts.n_owned(), numbers::invalid_unsigned_int);
+    const unsigned int        n_scalars = model->n_particle_scalars();
     if (!settling_force.empty())
       {
         settling_force.assign(ghosts.n_owned(), Tensor<1, dim>());
@@ -237,6 +242,12 @@ namespace PeriArlequin
         state.velocities()[i]    = old_state.velocities()[j];
         state.accelerations()[i] = old_state.accelerations()[j];
         applied_force[i]         = old_applied_force[j];
+        // The model's outputs, for the growth's window (open_growth_window()).
+        force_density[i]  = old_force_density[j];
+        energy_density[i] = old_energy_density[j];
+        std::copy_n(old_scalars.begin() + n_scalars * j,
+                    n_scalars,
+                    model_scalars.begin() + n_scalars * i);
         if (!settling_force.empty())
           {
             settling_force[i] = old_settling_force[j];
@@ -244,6 +255,7 @@ namespace PeriArlequin
           }
       }
     update_ghost_displacements();
+    growth_window_pending = true;
     return previous;
   }
 

@@ -127,6 +127,7 @@ namespace PeriArlequin
     block_slots.assign(runs.size() * half_offsets.size(), {0, 0});
     force_block_slots = block_slots;
     force_use.clear();
+    clear_window();
 
     // Slabs of the outermost coordinate, counted from the lattice's origin.
     const unsigned int thickness = std::max(reach, 1);
@@ -197,6 +198,90 @@ namespace PeriArlequin
     for (unsigned int i = 0; i < slot.size(); ++i)
       force_use[slot[i]] = (force_used[i] ? 1 : 0) | (state_used[i] ? 2 : 0);
     trim_blocks();
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::restrict_to_window(std::vector<std::uint8_t> flags)
+  {
+    AssertDimension(flags.size(), n_held);
+    window = std::move(flags);
+    // Per run and window, the slots [first, end) from the first to the last particle in it,
+    // counted from the run's first slot; the particles within reach of either window.
+    constexpr unsigned int none = std::numeric_limits<unsigned int>::max();
+    std::array<std::vector<std::pair<unsigned int, unsigned int>>, 2> run_window;
+    for (auto &bounds : run_window)
+      bounds.assign(runs.size(), {none, 0});
+    const std::size_t         line_length = stride[1];
+    std::vector<std::uint8_t> in_reach(n_held, 0);
+    for (unsigned int i = 0; i < n_held; ++i)
+      if (window[i] != 0)
+        {
+          const int r = run_of_line[slot[i] / line_length];
+          for (unsigned int w = 0; w < 2; ++w)
+            if (window[i] & (1u << w))
+              {
+                const unsigned int q    = slot[i] - runs[r].begin;
+                run_window[w][r].first  = std::min(run_window[w][r].first, q);
+                run_window[w][r].second = std::max(run_window[w][r].second, q + 1);
+              }
+          in_reach[i] = 1;
+          for (const std::ptrdiff_t shift : entry_shift)
+            if (const unsigned int j = local_of_slot[slot[i] + shift];
+                j != numbers::invalid_unsigned_int)
+              in_reach[j] = 1;
+        }
+    reach_of_window.clear();
+    for (unsigned int i = 0; i < n_held; ++i)
+      if (in_reach[i])
+        reach_of_window.push_back(i);
+    // A block's lower ends are the slots of its run, its upper ends those slots shifted by
+    // delta, on one other line: the slots whose lower or upper end is in a window span the
+    // hull of two intervals, cut to the slots the pass visits anyway.
+    const auto window_bounds = [&](const std::vector<std::pair<unsigned int, unsigned int>> &all,
+                                   const std::vector<std::pair<unsigned int, unsigned int>> &in,
+                                   std::vector<std::pair<unsigned int, unsigned int>> &bounds) {
+      bounds.assign(all.size(), {0, 0});
+      for (unsigned int r = 0; r < runs.size(); ++r)
+        for (std::size_t h = 0; h < half_offsets.size(); ++h)
+          {
+            const std::size_t block = r * half_offsets.size() + h;
+            long first = std::numeric_limits<long>::max(), end = std::numeric_limits<long>::min();
+            if (in[r].first != none)
+              {
+                first = in[r].first;
+                end   = in[r].second;
+              }
+            const std::size_t upper_line = (runs[r].begin + half_offsets[h].delta) / line_length;
+            if (upper_line < run_of_line.size() && run_of_line[upper_line] >= 0)
+              {
+                const unsigned int u = run_of_line[upper_line];
+                if (in[u].first != none)
+                  {
+                    const long shift = static_cast<long>(runs[u].begin) -
+                                       static_cast<long>(runs[r].begin + half_offsets[h].delta);
+                    first = std::min(first, shift + in[u].first);
+                    end   = std::max(end, shift + in[u].second);
+                  }
+              }
+            first = std::max(first, static_cast<long>(all[block].first));
+            end   = std::min(end, static_cast<long>(all[block].second));
+            if (first < end)
+              bounds[block] = {static_cast<unsigned int>(first), static_cast<unsigned int>(end)};
+          }
+    };
+    window_bounds(block_slots, run_window[0], window_block_slots);
+    window_bounds(force_block_slots, run_window[1], window_force_block_slots);
+  }
+
+  template <int dim>
+  void
+  StencilLayout<dim>::clear_window()
+  {
+    window.clear();
+    reach_of_window.clear();
+    window_block_slots.clear();
+    window_force_block_slots.clear();
   }
 
   template <int dim>

@@ -140,6 +140,25 @@ namespace PeriArlequin
         layout.restrict_force_pass(force_used, state_used);
     }
 
+    /**
+     * Under the stencil, let the next passes visit only the bonds near two windows of owned
+     * and ghost particles (StencilLayout::restrict_to_window()) until clear_window().
+     */
+    void
+    restrict_to_window(std::vector<std::uint8_t> window)
+    {
+      if (stencil_active)
+        layout.restrict_to_window(std::move(window));
+    }
+
+    /** See restrict_to_window(). */
+    void
+    clear_window()
+    {
+      if (stencil_active)
+        layout.clear_window();
+    }
+
     /** After entries of state changed: refresh the stencil view. */
     void
     states_changed();

@@ -46,6 +46,9 @@ namespace PeriArlequin
     /**
      * Whether the model has kernels for the stencil layout of the bonds (then it must use
      * them when BondFamilies::uses_stencil()); the default loops over the CSR arrays only.
+     * While the layout has a window (StencilLayout::restrict_to_window(), after a growth of
+     * the zone) its kernels may compute the scalars and forces of the particles in the
+     * window only and leave the others' entries as they are (the zone carried them over).
      */
     virtual bool
     supports_stencil() const;
@@ -210,7 +213,10 @@ namespace PeriArlequin
     update_intact_volumes(const BondFamilies<dim>     &bonds,
                           const std::vector<SlotBond> &broken,
                           const unsigned int           version_before) const;
-    /** The scalars of the owned particles from box_moment and the bonds' current states. */
+    /**
+     * The scalars of the owned particles (in the layout's window, if it has one) from
+     * box_moment and the bonds' current states.
+     */
     void
     scalars_from_moments_on_stencil(const BondFamilies<dim> &bonds,
                                     std::vector<double>     &scalars) const;

@@ -428,6 +428,17 @@ namespace PeriArlequin
     const BondFamilies<dim> &
     get_bonds() const;
 
+    /**
+     * The owned particles whose force densities the first evaluation after the last
+     * extend() computed (the others kept theirs, see open_growth_window()); all owned
+     * particles if it evaluated them all.
+     */
+    unsigned int
+    n_evaluated_after_growth() const
+    {
+      return evaluated_after_growth;
+    }
+
     /** Lattice cell volume dx^dim [m^dim]. */
     double
     particle_volume() const
@@ -583,6 +594,8 @@ namespace PeriArlequin
       std::vector<types::particle_index> ids;
       /** Whose bonds could not break (unbreakable_particles()). */
       std::vector<bool> no_fail;
+      /** Blending weights. */
+      std::vector<double> alpha;
     };
     /**
      * Local numbers, ghosts, bonds, weights, model and prescribed particles; the bonds between
@@ -654,6 +667,16 @@ namespace PeriArlequin
      */
     void
     evaluate_model(const bool scalars_current = false);
+    /**
+     * After extend(): let the next evaluation compute the scalars and forces near the
+     * particles that the growth changed only (the bonds' windows, see
+     * StencilLayout::restrict_to_window()); the others keep the values extend() carried over,
+     * which are those of a full evaluation: the same displacements, bonds, weights and sum
+     * order. Not under particle contact (its forces are added to all particles) or a fracture
+     * criterion other than the critical stretch (it tests every bond); collective.
+     */
+    void
+    open_growth_window();
     /**
      * The particles that may touch the obstacle: those of the pure PD part within its reach
      * at the end of the step; with @p next, their positions then if nothing pushed them,
@@ -745,6 +768,16 @@ namespace PeriArlequin
     std::vector<unsigned int> unforced;
     /** See new_damage_points(). */
     std::vector<Point<dim>> new_damage;
+    /**
+     * After extend() until the next evaluation or prediction (growth_window_pending): per
+     * owned and ghost particle, whether the growth made it or changed its blending weight or
+     * no-fail flag (open_growth_window()); unknown where a particle left the rank.
+     */
+    std::vector<bool> changed_by_growth;
+    bool              growth_changes_known  = false;
+    bool              growth_window_pending = false;
+    /** See n_evaluated_after_growth(). */
+    unsigned int evaluated_after_growth = 0;
     /** Handle of the particle state attached to the cells during a repartition. */
     unsigned int state_handle = numbers::invalid_unsigned_int;
     /**

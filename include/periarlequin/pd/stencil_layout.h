@@ -101,6 +101,66 @@ namespace PeriArlequin
     void
     restrict_force_pass(const std::vector<bool> &force_used, const std::vector<bool> &state_used);
 
+    /** The three passes over the bonds, for the slots each visits (pass_slots()). */
+    enum class Pass
+    {
+      intact_volume,
+      dilatation,
+      force
+    };
+
+    /**
+     * Let the next dilatation passes visit only the bonds with an end in the scalar window
+     * and the next force passes only those with an end in the force window, until
+     * clear_window(): after a change confined to a few particles (a growth of the zone), the
+     * sums of the rest are known. @p window per held particle (local index): bit 0 in the
+     * scalar window, bit 1 in the force window. A particle of a window gets every term of
+     * its sums, in the order of a full pass, so the same bits; the sums of the other slots
+     * are partial and must not be read (in_window()). The passes read the displacements and
+     * coefficients of window_reach() only.
+     */
+    void
+    restrict_to_window(std::vector<std::uint8_t> flags);
+    /** Every pass visits all its slots again. */
+    void
+    clear_window();
+
+    /** Whether restrict_to_window() holds. */
+    bool
+    has_window() const
+    {
+      return !window.empty();
+    }
+
+    /** Whether the sums of held particle @p i by the passes @p pass are complete. */
+    bool
+    in_window(const unsigned int i, const Pass pass) const
+    {
+      return window.empty() || pass == Pass::intact_volume ||
+             (window[i] & (pass == Pass::force ? 2 : 1)) != 0;
+    }
+
+    /**
+     * Under a window, the held particles within the stencil of a particle of either window
+     * (the ends of the bonds the passes visit), in order; empty without one.
+     */
+    const std::vector<unsigned int> &
+    window_reach() const
+    {
+      return reach_of_window;
+    }
+
+    /** The slots [first, end) of each (run, half offset) that the pass @p pass visits. */
+    const std::vector<std::pair<unsigned int, unsigned int>> &
+    pass_slots(const Pass pass) const
+    {
+      if (pass == Pass::intact_volume)
+        return block_slots;
+      if (window.empty())
+        return pass == Pass::force ? force_block_slots : block_slots;
+      return pass == Pass::force ? window_force_block_slots : window_block_slots;
+    }
+
     /** The bond states from the CSR states of @p bonds (after they were built or bonds broke). */
     void
     update_mask(const BondFamilies<dim> &bonds);
@@ -275,6 +335,15 @@ namespace PeriArlequin
      * (restrict_force_pass(); empty: every bond's pair force is used).
      */
     std::vector<std::uint8_t> force_use;
+    /**
+     * Per held particle, bit 0: in the dilatation pass's window, bit 1: in the force pass's
+     * (restrict_to_window(); empty: no window), and the slots of block_slots and
+     * force_block_slots that hold the bonds with an end in each window.
+     */
+    std::vector<std::uint8_t>                          window;
+    std::vector<std::pair<unsigned int, unsigned int>> window_block_slots, window_force_block_slots;
+    /** See window_reach(). */
+    std::vector<unsigned int> reach_of_window;
     /** The phase (0: even slabs, 1: odd) in which the passes visit each run. */
     std::vector<std::uint8_t> run_phase;
     unsigned int              n_held  = 0;
