@@ -467,30 +467,6 @@ namespace PeriArlequin
           1);
     }
 
-    /**
-     * @p visit(i) for the held particles whose values the passes read: those within reach of
-     * the layout's window if it has one (StencilLayout::window_reach()), else all @p n_held;
-     * on the threads.
-     */
-    template <int dim, typename Visitor>
-    void
-    for_each_read_particle(const StencilLayout<dim> &layout,
-                           const unsigned int        n_held,
-                           const Visitor            &visit)
-    {
-      const auto &reach = layout.window_reach();
-      if (!layout.has_window())
-        for_each_subrange(n_held, [&](const unsigned int first, const unsigned int end) {
-          for (unsigned int i = first; i < end; ++i)
-            visit(i);
-        });
-      else
-        for_each_subrange(reach.size(), [&](const unsigned int first, const unsigned int end) {
-          for (unsigned int k = first; k < end; ++k)
-            visit(reach[k]);
-        });
-    }
-
     /** Resize @p values to @p n entries, zero where new (stale entries stay finite). */
     void
     fit(std::vector<double> &values, const std::size_t n)
@@ -506,10 +482,13 @@ namespace PeriArlequin
                                                     ArrayView<const Tensor<1, dim>> u) const
   {
     const std::size_t n_slots = layout.n_slots();
+    // Every held particle, also under a window: the passes visit whole slot ranges, whose
+    // bonds without an end in the window must not break on stale displacements.
     fit(box_displacement, dim * n_slots);
-    for_each_read_particle(layout, layout.slot.size(), [&](const unsigned int i) {
-      for (unsigned int d = 0; d < dim; ++d)
-        box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
+    for_each_subrange(layout.slot.size(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          box_displacement[d * n_slots + layout.slot[i]] = u[i][d];
     });
   }
 
@@ -608,7 +587,7 @@ namespace PeriArlequin
     const std::size_t n_slots = layout.n_slots();
     compute_coefficients(bonds, make_array_view(scalars), state_weight);
     fit(box_coefficients, 3 * n_slots);
-    for_each_read_particle(layout, bonds.n_total, [&](const unsigned int i) {
+    layout.for_each_read_particle(bonds.n_total, [&](const unsigned int i) {
       for (unsigned int m = 0; m < 3; ++m)
         box_coefficients[m * n_slots + layout.slot[i]] = coefficients[3 * i + m];
     });

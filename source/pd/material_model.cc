@@ -173,23 +173,16 @@ namespace PeriArlequin
     // (beta_i + beta_j) e + (a_i + a_j) x with a = alpha - beta theta / 3; theta / 3 is kept
     // for the deviatoric energy.
     coefficients.resize(3 * bonds.n_total);
-    // Under a window of the stencil, only the particles its passes read.
-    const bool         windowed = bonds.uses_stencil() && bonds.stencil_layout().has_window();
-    const auto        &reach    = bonds.stencil_layout().window_reach();
-    const unsigned int n        = windowed ? reach.size() : bonds.n_total;
-    for_each_subrange(n, [&](const unsigned int first, const unsigned int end) {
-      for (unsigned int p = first; p < end; ++p)
-        {
-          const unsigned int j      = windowed ? reach[p] : p;
-          const double       weight = state_weight.empty() ? 1. : state_weight[j];
-          const double       q      = bonds.weighted_volume[j];
-          const double       beta   = b / q;
-          const double       theta  = scalars[2 * j];
-          const double       alpha  = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
-          coefficients[3 * j]       = weight * beta;
-          coefficients[3 * j + 1]   = weight * (alpha - beta * theta / 3.);
-          coefficients[3 * j + 2]   = theta / 3.;
-        }
+    // Under a window of the stencil, only the particles its force pass reads.
+    bonds.stencil_layout().for_each_read_particle(bonds.n_total, [&](const unsigned int j) {
+      const double weight     = state_weight.empty() ? 1. : state_weight[j];
+      const double q          = bonds.weighted_volume[j];
+      const double beta       = b / q;
+      const double theta      = scalars[2 * j];
+      const double alpha      = c * (k * theta - beta * scalars[2 * j + 1] / 3.) / q;
+      coefficients[3 * j]     = weight * beta;
+      coefficients[3 * j + 1] = weight * (alpha - beta * theta / 3.);
+      coefficients[3 * j + 2] = theta / 3.;
     });
   }
 

@@ -1,6 +1,7 @@
 #ifndef periarlequin_pd_stencil_layout_h
 #define periarlequin_pd_stencil_layout_h
 
+#include <periarlequin/base/parallel_loops.h>
 #include <periarlequin/pd/lattice.h>
 
 #include <deal.II/base/array_view.h>
@@ -116,8 +117,10 @@ namespace PeriArlequin
      * sums of the rest are known. @p window per held particle (local index): bit 0 in the
      * scalar window, bit 1 in the force window. A particle of a window gets every term of
      * its sums, in the order of a full pass, so the same bits; the sums of the other slots
-     * are partial and must not be read (in_window()). The passes read the displacements and
-     * coefficients of window_reach() only.
+     * are partial and must not be read (in_window()). The force pass needs the coefficients
+     * of window_reach() only (for_each_read_particle()); it and the dilatation pass need the
+     * displacements of every held particle (a visited bond without an end in a window must
+     * not break on a stale one).
      */
     void
     restrict_to_window(std::vector<std::uint8_t> flags);
@@ -149,6 +152,14 @@ namespace PeriArlequin
     {
       return reach_of_window;
     }
+
+    /**
+     * @p visit(i) for the held particles whose force coefficients the force pass reads: the
+     * window_reach() under a window, else all @p n_held; on the threads.
+     */
+    template <typename Visitor>
+    void
+    for_each_read_particle(const unsigned int n_held, const Visitor &visit) const;
 
     /** The slots [first, end) of each (run, half offset) that the pass @p pass visits. */
     const std::vector<std::pair<unsigned int, unsigned int>> &
@@ -349,6 +360,24 @@ namespace PeriArlequin
     unsigned int              n_held  = 0;
     unsigned int              version = 0;
   };
+  template <int dim>
+  template <typename Visitor>
+  void
+  StencilLayout<dim>::for_each_read_particle(const unsigned int n_held, const Visitor &visit) const
+  {
+    if (!has_window())
+      for_each_subrange(n_held, [&](const unsigned int first, const unsigned int end) {
+        for (unsigned int i = first; i < end; ++i)
+          visit(i);
+      });
+    else
+      for_each_subrange(reach_of_window.size(),
+                        [&](const unsigned int first, const unsigned int end) {
+                          for (unsigned int k = first; k < end; ++k)
+                            visit(reach_of_window[k]);
+                        });
+  }
+
   template <int dim>
   template <typename Visitor>
   void
