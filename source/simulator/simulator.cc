@@ -11,6 +11,28 @@
 
 namespace PeriArlequin
 {
+  namespace
+  {
+    /**
+     * What to do where the FE strain exceeds the critical stretch: with a fixed zone, give
+     * that place to PD; with an adaptive one, let a strain criterion convert it (earlier).
+     */
+    template <int dim>
+    std::string
+    fe_strain_advice(const PDZoneGrowth<dim> *growth)
+    {
+      if (!growth)
+        return "Put that place in the PD region (Peridynamics/Region), or let an adaptive zone "
+               "grow there (Adaptive PD zone/Conversion criterion = damage distance, strain).";
+      if (!growth->uses_criterion("strain"))
+        return "Add the strain criterion (Adaptive PD zone/Conversion criterion = damage "
+               "distance, strain): it converts the cells whose FE strain nears the critical "
+               "stretch.";
+      return "Let the strain criterion convert earlier (a lower Adaptive PD zone/strain/"
+             "Fraction of critical stretch).";
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::run()
@@ -97,6 +119,14 @@ namespace PeriArlequin
                    "domain) may be as fast on this case.";
         pcout << std::endl;
       }
+    // Warnings scroll by in a long run: the largest is repeated where the run ends.
+    if (warned_strain_ratio >= 1.)
+      pcout << "FE strain: the largest the run warned about, " << warned_strain_ratio
+            << " times the critical stretch at t = " << warned_strain_time << " s at ("
+            << warned_strain_place
+            << ") m. The FE zone cannot break: a crack PD would start there is missing from "
+               "this answer. "
+            << fe_strain_advice(zone_growth.get()) << std::endl;
     if (output_parameters.print_timing)
       timer.print_wall_time_statistics(communicator);
   }
@@ -331,10 +361,8 @@ namespace PeriArlequin
     warned_strain_place = place;
     pcout << "Warning: at t = " << get_time() << " s the FE field's strain reaches " << ratio
           << " times the critical stretch " << critical << " at (" << place
-          << ") m. The FE zone cannot break: PD might crack there, this run cannot. Put that "
-             "place in the PD region, or let the zone grow before the strain gets there "
-             "(Adaptive PD zone/Conversion criterion = damage distance, strain)."
-          << std::endl;
+          << ") m. The FE zone cannot break: PD might crack there, this run cannot. "
+          << fe_strain_advice(zone_growth.get()) << std::endl;
     return ratio;
   }
 
@@ -389,12 +417,10 @@ namespace PeriArlequin
     for (const std::string &note : notes)
       advice << " Note: " << note;
     if (!zone_growth->uses_criterion("strain") && notes.empty())
-      advice << " Add the strain criterion (Adaptive PD zone/Conversion criterion = damage "
-                "distance, strain): it converts the cells whose FE strain nears the critical "
-                "stretch before bonds break there.";
+      advice << " " << fe_strain_advice(zone_growth.get());
     else if (zone_growth->uses_criterion("strain"))
-      advice << " Let the strain criterion convert earlier (a lower Adaptive PD zone/strain/"
-                "Fraction of critical stretch), or widen the band (Coupling/Overlap width).";
+      advice << " " << fe_strain_advice(zone_growth.get())
+             << " Or widen the band (Coupling/Overlap width).";
     return advice.str();
   }
 
