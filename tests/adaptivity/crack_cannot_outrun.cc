@@ -19,6 +19,7 @@
 // record as on 1 rank (exact), the energies agree to 1e-10 (sums in another order).
 
 #include "../tests.h"
+#include "plates.h"
 
 using namespace PeriArlequinTests;
 
@@ -26,18 +27,10 @@ std::string
 fast_crack_text(const std::string &zone)
 {
   std::ostringstream text;
-  text << "set Dimension = 2\n"
-       << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
-       << "  set Subdivisions = 40, 16\nend\n"
-       << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
-       << "  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
-       << "subsection Peridynamics\n  set Lattice spacing = 6.25e-4\n  set Horizon factor = 3.2\n"
-       << "  set Fracture = true\n  set Critical energy release rate = 3.8\n"
-       << "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\n";
   if (zone == "pure PD")
-    text << "  set Region = 0, 0 : 0.1, 0.04\nend\n";
+    text << notched_glass_plate("0, 0 : 0.1, 0.04");
   else
-    text << "  set Region = 0, 0.0125 : 0.06, 0.0275\nend\n"
+    text << notched_glass_plate("0, 0.0125 : 0.06, 0.0275")
          << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
          << "  set Overlap width = 0.005\n  set Damping constant = 10\nend\n"
          << "subsection Adaptive PD zone\n"

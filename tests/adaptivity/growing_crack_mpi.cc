@@ -18,6 +18,7 @@
 //    1000 + 16 sites x 37 bonds) over a rank's load (about 5e5 here), 0.3 %.
 
 #include "../tests.h"
+#include "plates.h"
 
 using namespace PeriArlequinTests;
 
@@ -25,16 +26,7 @@ std::string
 growing_crack_text(const double imbalance_tolerance)
 {
   std::ostringstream text;
-  text << "set Dimension = 2\n"
-       << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
-       << "  set Subdivisions = 40, 16\nend\n"
-       << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
-       << "  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
-       << "subsection Peridynamics\n  set Region = 0, 0.0125 : 0.06, 0.0275\n"
-       << "  set Lattice spacing = 6.25e-4\n  set Horizon factor = 3.2\n"
-       << "  set Fracture = true\n  set Critical energy release rate = 3.8\n"
-       << "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\nend\n"
-       << opposite_y_tractions(2e6, 2)
+  text << notched_glass_plate("0, 0.0125 : 0.06, 0.0275") << opposite_y_tractions(2e6, 2)
        << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
        << "  set Overlap width = 0.005\n  set Damping constant = 10\nend\n"
        << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\n"

@@ -28,6 +28,7 @@
 #include <set>
 
 #include "../tests.h"
+#include "plates.h"
 
 using namespace PeriArlequinTests;
 
@@ -37,16 +38,7 @@ namespace
   crack_plate_text(const std::string &blending)
   {
     std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.04\n"
-         << "  set Subdivisions = 40, 16\nend\n"
-         << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
-         << "  set Density = 2440\n  set Two-dimensional model = plane stress\nend\n"
-         << "subsection Peridynamics\n  set Lattice spacing = 6.25e-4\n"
-         << "  set Horizon factor = 3.2\n  set Fracture = true\n"
-         << "  set Critical energy release rate = 3.8\n"
-         << "  set Pre-cracks = 0, 0.02 : 0.05, 0.02\n"
-         << "  set Region = 0, 0.0125 : 0.06, 0.0275\nend\n"
+    text << notched_glass_plate("0, 0.0125 : 0.06, 0.0275")
          << "subsection Coupling\n  set Method = weak\n  set Blending = " << blending << "\n"
          << "  set Overlap width = 0.005\n  set Damping constant = 10\nend\n"
          << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance\n"
@@ -67,18 +59,7 @@ namespace
   impact_plate_text()
   {
     std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = 0, 0\n  set Upper corner = 0.1, 0.2\n"
-         << "  set Subdivisions = 20, 40\nend\n"
-         << "subsection Material\n  set Young's modulus = 190e9\n  set Poisson's ratio = 0.3\n"
-         << "  set Density = 8000\n  set Two-dimensional model = plane strain\nend\n"
-         << "subsection Peridynamics\n  set Lattice spacing = 1e-3\n  set Horizon factor = 3.015\n"
-         << "  set Fracture = true\n  set Critical energy release rate = 22170\n"
-         << "  set Pre-cracks = 0, 0.075 : 0.05, 0.075 ; 0, 0.125 : 0.05, 0.125\n"
-         << "  subsection Prescribed region 0\n    set Region = 0, 0.075 : 0.003, 0.125\n"
-         << "    set Type = velocity\n    set Components = x\n"
-         << "    subsection Function\n      set Function expression = 32; 0\n    end\n  end\n"
-         << "  set Region = 0, 0.07 : 0.055, 0.13\nend\n"
+    text << struck_steel_plate("0, 0.07 : 0.055, 0.13")
          << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
          << "  set Overlap width = 0.01\nend\n"
          << "subsection Adaptive PD zone\n  set Conversion criterion = damage distance, strain\n"
