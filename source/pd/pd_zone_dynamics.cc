@@ -12,14 +12,28 @@
 
 namespace PeriArlequin
 {
+  namespace
+  {
+    /** Closes the bonds' window when an evaluation ends, also by an exception. */
+    template <int dim>
+    struct WindowCloser
+    {
+      BondFamilies<dim> &bonds;
+      ~WindowCloser()
+      {
+        bonds.clear_window();
+      }
+    };
+  } // namespace
+
   template <int dim>
   void
   PDZone<dim>::compute_internal_forces()
   {
     open_growth_window();
+    const WindowCloser<dim> closer{bonds};
     update_ghost_displacements();
     evaluate_model();
-    bonds.clear_window();
   }
 
   template <int dim>
@@ -156,6 +170,7 @@ namespace PeriArlequin
   PDZone<dim>::compute_forces(const double time)
   {
     open_growth_window();
+    const WindowCloser<dim> closer{bonds};
     update_ghost_displacements();
     // A critical stretch is tested where the model forms the extensions for its scalars,
     // which then see the broken bonds; a criterion that reads the scalars gets them for these
@@ -197,7 +212,6 @@ namespace PeriArlequin
     if (checks_overlap)
       check_damage_near_overlap(time, broken);
     evaluate_model(scalars_current);
-    bonds.clear_window();
   }
 
   template <int dim>
