@@ -130,7 +130,11 @@ namespace PeriArlequin
                                       "",
                                       &Region<dim>::parse,
                                       "Boxes 'lower : upper ; ...' [m] in which bonds never "
-                                      "break (a bond with either end inside).");
+                                      "break (a bond with either end inside). A sudden "
+                                      "traction can break the first layers of its face in PD (a "
+                                      "surface effect of the lattice); a box a horizon deep "
+                                      "along the face keeps them, which a coupled run whose "
+                                      "band reaches that face needs.");
     }
 
     template <int dim>

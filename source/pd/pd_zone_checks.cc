@@ -26,6 +26,40 @@ namespace PeriArlequin
              << " cells of the mesh";
       return text.str();
     }
+
+    /**
+     * The boundary with a traction or a displacement nearest to @p point and its distance, over
+     * the faces of all ranks' owned cells (each face by its bounding box: exact on a box mesh,
+     * a lower bound on curved faces); infinite distance if no boundary is loaded.
+     */
+    template <int dim>
+    std::pair<types::boundary_id, double>
+    nearest_loaded_boundary(const Triangulation<dim> &triangulation,
+                            const ProblemData<dim>   &data,
+                            const MPI_Comm            communicator,
+                            const Point<dim>         &point)
+    {
+      double             nearest = std::numeric_limits<double>::infinity();
+      types::boundary_id id      = numbers::invalid_boundary_id;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() < ProblemData<dim>::n_boundaries &&
+                data.boundary_conditions[face->boundary_id()].type != BoundaryType::free)
+              {
+                const auto   corners = face->bounding_box().get_boundary_points();
+                const double d       = Box<dim>{corners.first, corners.second}.distance(point);
+                if (d < nearest)
+                  {
+                    nearest = d;
+                    id      = face->boundary_id();
+                  }
+              }
+      const double global = Utilities::MPI::min(nearest, communicator);
+      return {Utilities::MPI::min(nearest == global ? id : numbers::invalid_boundary_id,
+                                  communicator),
+              global};
+    }
   } // namespace
 
   template <int dim>
@@ -109,6 +143,24 @@ namespace PeriArlequin
     statement << "Damage reached the overlap at t = " << time << " s: a bond of the particle at ("
               << position << ") m, one bond away from the overlap, broke. The coupling assumes "
               << "an intact continuum in the overlap and the FE zone, so the run stops here.";
+    // Damage at a loaded face has a cause of its own, whatever grows or stays fixed.
+    const auto [boundary, distance] =
+      problem_data ?
+        nearest_loaded_boundary(triangulation, *problem_data, communicator, position) :
+        std::make_pair(numbers::invalid_boundary_id, std::numeric_limits<double>::infinity());
+    const double depth = parameters.coupled_particle_reach();
+    if (distance < depth)
+      statement << " The particle lies " << distance << " m from boundary " << boundary
+                << ", which carries a "
+                << (problem_data->boundary_conditions[boundary].type == BoundaryType::traction ?
+                      "traction" :
+                      "displacement")
+                << ": the PD layers along a loaded face carry it at more than the continuum's "
+                   "strain and can break (pure PD breaks them too, a surface effect of the "
+                   "lattice), and a band along that face cannot hold that damage. A No-fail "
+                   "region (Peridynamics/No-fail region) a horizon deep along the face keeps "
+                   "those bonds intact; or keep the PD zone two bond reaches ("
+                << depth << " m) and the band away from it.";
     AssertThrow(false,
                 ExcDamageNearOverlap(
                   statement.str(),
