@@ -135,6 +135,17 @@ namespace PeriArlequin
                                       "surface effect of the lattice); a box a horizon deep "
                                       "along the face keeps them, which a coupled run whose "
                                       "band reaches that face needs.");
+      entries.add("Unbreakable traction layer",
+                  unbreakable_traction_layer,
+                  Patterns::Bool(),
+                  "Bonds with an end in the layer of particles that carries a traction (the "
+                  "sites within dx of the face, loaded by the force density t / dx) never "
+                  "break. That layer passes the load on through fewer bonds than the bulk "
+                  "has across a plane and strains them beyond the continuum's: a sudden 4 MPa "
+                  "on glass breaks them (2D at dx = 0.625 mm, 3D at 0.7 mm) where the bulk "
+                  "stays at a third of the critical stretch, damage of the lattice, not a "
+                  "crack, which stops a coupled run whose band reaches that face. false: they "
+                  "break as every bond.");
     }
 
     template <int dim>

@@ -249,7 +249,8 @@ namespace PeriArlequin
     std::vector<std::uint8_t> tested(ghosts.n_total());
     for_each_subrange(tested.size(), [&](const unsigned int first, const unsigned int end) {
       for (unsigned int i = first; i < end; ++i)
-        tested[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]);
+        tested[i] = alpha[i] > 0 || parameters.no_fail_region.contains(x[i]) ||
+                    (parameters.unbreakable_traction_layer && traction_layers_at(x[i]) != 0);
     });
     return std::vector<bool>(tested.begin(), tested.end());
   }
@@ -369,27 +370,29 @@ namespace PeriArlequin
     // have complete families, so the dilatations that enter a free particle's force are those of
     // the bulk and no free particle feels the surface; the layer is the fictitious boundary
     // layer, inside the domain.
-    const double     dx            = parameters.lattice_spacing;
-    const double     depth         = 2. * (parameters.horizon() + 0.5 * dx);
-    const auto       x             = ghosts.reference_positions();
-    const Point<dim> lattice_upper = lattice.upper_corner();
+    const double depth = 2. * (parameters.horizon() + 0.5 * parameters.lattice_spacing);
+    const auto   x     = ghosts.reference_positions();
     traction_faces.assign(ghosts.n_owned(), 0);
     if (general_cells)
       {
         check_clear_of_loaded_boundaries(depth);
         return;
       }
+    for_each_subrange(ghosts.n_owned(), [&](const unsigned int first, const unsigned int end) {
+      for (unsigned int i = first; i < end; ++i)
+        traction_faces[i] = traction_layers_at(x[i]);
+    });
     for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
       {
-        const auto           &condition = problem_data->boundary_conditions[b];
+        const auto &condition = problem_data->boundary_conditions[b];
+        if (condition.type != BoundaryType::displacement)
+          continue;
         const unsigned int    direction = b / 2;
         std::array<bool, dim> components;
         for (unsigned int d = 0; d < dim; ++d)
-          components[d] = condition.type == BoundaryType::displacement && condition.components[d];
-        if (condition.type == BoundaryType::free)
-          continue;
-        // On the threads: each chunk marks its own particles' faces and lists the particles
-        // of the layer, prescribed after in their order.
+          components[d] = condition.components[d];
+        // On the threads: each chunk lists the particles of the layer, prescribed after in
+        // their order.
         const std::vector<unsigned int> layer = join_over_chunks<unsigned int>(
           ghosts.n_owned(),
           [&](const unsigned int first, const unsigned int end, std::vector<unsigned int> &list) {
@@ -397,19 +400,34 @@ namespace PeriArlequin
               {
                 const double distance = (b % 2 == 0) ? x[i][direction] - domain.lower[direction] :
                                                        domain.upper[direction] - x[i][direction];
-                const double from_lattice_face =
-                  (b % 2 == 0) ? distance : lattice_upper[direction] - x[i][direction];
-                if (condition.type == BoundaryType::traction &&
-                    from_lattice_face < dx * (1. - 1e-12))
-                  traction_faces[i] |= (1u << b);
-                else if (condition.type == BoundaryType::displacement && !slave[i] &&
-                         distance < depth * (1. - 1e-12))
+                if (!slave[i] && distance < depth * (1. - 1e-12))
                   list.push_back(i);
               }
           });
         for (const unsigned int i : layer)
           prescribed.add(i, x[i], *condition.function, components, b);
       }
+  }
+
+  template <int dim>
+  std::uint8_t
+  PDZone<dim>::traction_layers_at(const Point<dim> &x) const
+  {
+    if (general_cells || !problem_data)
+      return 0;
+    const double     dx            = parameters.lattice_spacing;
+    const Point<dim> lattice_upper = lattice.upper_corner();
+    std::uint8_t     faces         = 0;
+    for (unsigned int b = 0; b < ProblemData<dim>::n_boundaries; ++b)
+      if (problem_data->boundary_conditions[b].type == BoundaryType::traction)
+        {
+          const unsigned int direction   = b / 2;
+          const double from_lattice_face = (b % 2 == 0) ? x[direction] - domain.lower[direction] :
+                                                          lattice_upper[direction] - x[direction];
+          if (from_lattice_face < dx * (1. - 1e-12))
+            faces |= (1u << b);
+        }
+    return faces;
   }
 
   template <int dim>

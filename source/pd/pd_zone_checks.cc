@@ -156,10 +156,11 @@ namespace PeriArlequin
                       "traction" :
                       "displacement")
                 << ": the PD layers along a loaded face carry it at more than the continuum's "
-                   "strain and can break (pure PD breaks them too, a surface effect of the "
-                   "lattice), and a band along that face cannot hold that damage. A No-fail "
-                   "region (Peridynamics/No-fail region) a horizon deep along the face keeps "
-                   "those bonds intact; or keep the PD zone two bond reaches ("
+                   "strain and can break (in pure PD too, a surface effect of the lattice; the "
+                   "bonds of a traction layer itself are kept by Peridynamics/Unbreakable "
+                   "traction layer), and a band along that face cannot hold that damage. A "
+                   "No-fail region (Peridynamics/No-fail region) a horizon deep along the face "
+                   "keeps those bonds intact; or keep the PD zone two bond reaches ("
                 << depth << " m) and the band away from it.";
     AssertThrow(false,
                 ExcDamageNearOverlap(

@@ -19,6 +19,7 @@
 #include <periarlequin/adaptivity/conversion_criterion.h>
 
 #include "../tests.h"
+#include "plates.h"
 
 using namespace PeriArlequinTests;
 
@@ -65,15 +66,7 @@ std::string
 notched_plate_text()
 {
   std::ostringstream text;
-  text << "set Dimension = 3\n"
-       << "subsection Geometry\n  set Lower corner = 0, 0, 0\n"
-       << "  set Upper corner = 0.06, 0.04, 0.008\n  set Subdivisions = 15, 10, 2\nend\n"
-       << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
-       << "  set Density = 2440\nend\n"
-       << "subsection Peridynamics\n  set Region = 0, 0.012, 0 : 0.036, 0.028, 0.008\n"
-       << "  set Lattice spacing = 1e-3\n  set Fracture = true\n"
-       << "  set Critical energy release rate = 3.8\n"
-       << "  set Pre-cracks = 0, 0.02, 0 : 0.03, 0, 0 : 0, 0, 0.008\nend\n"
+  text << notched_glass_plate_3d("0, 0.012, 0 : 0.036, 0.028, 0.008")
        << opposite_y_tractions(4e6, 3)
        << "subsection Coupling\n  set Method = weak\n  set Blending = force\n"
        << "  set Overlap width = 0.008\n  set Damping constant = 10\nend\n"

@@ -56,6 +56,27 @@ namespace PeriArlequinTests
          << "end\n";
     return text.str();
   }
+
+  /**
+   * The notched glass plate in 3D, 0.06 x 0.04 x 0.008 m (E = 72 GPa, nu = 0.22,
+   * 2440 kg/m^3, FE cells 4 mm), lattice 1 mm, horizon 3.015 dx, G0 = 3.8 J/m^2, a
+   * through-thickness notch 30 mm long along y = 20 mm, PD on @p region.
+   */
+  inline std::string
+  notched_glass_plate_3d(const std::string &region)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 3\n"
+         << "subsection Geometry\n  set Lower corner = 0, 0, 0\n"
+         << "  set Upper corner = 0.06, 0.04, 0.008\n  set Subdivisions = 15, 10, 2\nend\n"
+         << "subsection Material\n  set Young's modulus = 72e9\n  set Poisson's ratio = 0.22\n"
+         << "  set Density = 2440\nend\n"
+         << "subsection Peridynamics\n  set Region = " << region << "\n"
+         << "  set Lattice spacing = 1e-3\n  set Fracture = true\n"
+         << "  set Critical energy release rate = 3.8\n"
+         << "  set Pre-cracks = 0, 0.02, 0 : 0.03, 0, 0 : 0, 0, 0.008\nend\n";
+    return text.str();
+  }
 } // namespace PeriArlequinTests
 
 #endif

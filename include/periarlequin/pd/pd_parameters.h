@@ -72,6 +72,7 @@ namespace PeriArlequin
       double                     critical_stretch    = 0;
       std::vector<PreCrack<dim>> pre_cracks;
       Region<dim>                no_fail_region;
+      bool                       unbreakable_traction_layer = true;
       std::array<PrescribedParticleRegion<dim>, n_prescribed_regions> prescribed;
       ParticleContact                                                 contact;
 

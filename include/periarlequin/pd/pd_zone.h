@@ -607,7 +607,8 @@ namespace PeriArlequin
                               const HeldBefore                          *before = nullptr);
     /**
      * Per owned and ghost particle, whether its bonds cannot break: in the overlap and the slave
-     * layer (the coupling assumes a continuum there) or in Peridynamics/No-fail region.
+     * layer (the coupling assumes a continuum there), in Peridynamics/No-fail region, or in
+     * a traction layer (Peridynamics/Unbreakable traction layer).
      */
     std::vector<bool>
     unbreakable_particles() const;
@@ -631,6 +632,13 @@ namespace PeriArlequin
      */
     void
     find_boundary_layers();
+    /**
+     * The faces (bit b for boundary b) with a traction whose layer holds a particle at @p x:
+     * the sites within dx of the lattice's face (none on a mesh file, where the PD zone
+     * carries no boundary condition).
+     */
+    std::uint8_t
+    traction_layers_at(const Point<dim> &x) const;
     /**
      * The intact bonds of the pure PD particles one bond away from the overlap or the slave
      * layer (whose own bonds cannot break); a pre-crack that cuts bonds there is an error.
