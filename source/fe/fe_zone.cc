@@ -437,14 +437,18 @@ namespace PeriArlequin
     auto                                &body_force = data.body_force;
     body_force.set_time(time);
 
-    // Loads are blended like the mass, alpha (the PD zone takes 1 - alpha): the body force
-    // and the tractions on faces in an overlap.
+    // Loads are blended like the internal forces (the PD zone takes 1 - alpha): with alpha at
+    // the quadrature points, or, under force blending, with the nodal weight alpha_I of the
+    // internal force. Weighted like the mass there instead, a node of the PD region's edge
+    // on a loaded face (alpha_I = 0: no internal force) took its neighbours' share of the
+    // traction and accelerated without bound.
+    const bool nodal    = !nodal_force_weights.empty();
     const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {
       for (const unsigned int q : values.quadrature_point_indices())
         {
           const Point<dim> &x = values.quadrature_point(q);
           function.vector_value(x, load);
-          const double JxW = mass_weight(x) * values.JxW(q);
+          const double JxW = (nodal ? 1. : mass_weight(x)) * values.JxW(q);
           for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
             {
               const unsigned int c = values.get_fe().system_to_component_index(i).first;
@@ -479,6 +483,9 @@ namespace PeriArlequin
           force(dof_indices[i]) += cell_force(i);
       }
     force.compress(VectorOperation::add);
+    if (nodal)
+      for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+        force.local_element(i) *= nodal_force_weights[i];
   }
 
   template <int dim>
