@@ -437,22 +437,29 @@ namespace PeriArlequin
     auto                                &body_force = data.body_force;
     body_force.set_time(time);
 
-    // Loads are blended like the internal forces (the PD zone takes 1 - alpha): with alpha at
-    // the quadrature points, or, under force blending, with the nodal weight alpha_I of the
-    // internal force. Weighted like the mass there instead, a node of the PD region's edge
-    // on a loaded face (alpha_I = 0: no internal force) took its neighbours' share of the
-    // traction and accelerated without bound.
-    const bool nodal    = !nodal_force_weights.empty();
-    const auto add_load = [&](const FEValuesBase<dim> &values, Function<dim> &function) {
+    // Loads are blended like the mass, alpha at the quadrature points (the PD zone takes
+    // 1 - alpha), so that a body force accelerates the blended body rigidly. Under force
+    // blending the tractions take the nodal weight alpha_I of the internal forces instead:
+    // a node where the PD region's edge meets a loaded face (alpha_I = 0, no internal force)
+    // cannot pass a share of the traction on to the body, and accelerated without bound.
+    const bool nodal_tractions = !nodal_force_weights.empty() && data.has_tractions();
+    VectorType traction;
+    if (nodal_tractions)
+      initialize_vector(traction);
+    Vector<double> cell_traction;
+    const auto     add_load = [&](const FEValuesBase<dim> &values,
+                              Function<dim>           &function,
+                              const bool               weighted,
+                              Vector<double>          &cell_load) {
       for (const unsigned int q : values.quadrature_point_indices())
         {
           const Point<dim> &x = values.quadrature_point(q);
           function.vector_value(x, load);
-          const double JxW = (nodal ? 1. : mass_weight(x)) * values.JxW(q);
+          const double JxW = (weighted ? mass_weight(x) : 1.) * values.JxW(q);
           for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
             {
               const unsigned int c = values.get_fe().system_to_component_index(i).first;
-              cell_force(i) += load(c) * values.shape_value(i, q) * JxW;
+              cell_load(i) += load(c) * values.shape_value(i, q) * JxW;
             }
         }
     };
@@ -462,10 +469,11 @@ namespace PeriArlequin
         if (!cell->is_locally_owned() || cell->get_fe().n_dofs_per_cell() == 0)
           continue;
         cell_force.reinit(cell->get_fe().n_dofs_per_cell());
+        cell_traction.reinit(cell_force.size());
         if (data.has_body_force)
           {
             hp_fe_values.reinit(cell);
-            add_load(hp_fe_values.get_present_fe_values(), body_force);
+            add_load(hp_fe_values.get_present_fe_values(), body_force, true, cell_force);
           }
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f) && cell->face(f)->boundary_id() < ProblemData<dim>::n_boundaries)
@@ -475,17 +483,27 @@ namespace PeriArlequin
                 continue;
               condition.function->set_time(time);
               hp_face_values.reinit(cell, f);
-              add_load(hp_face_values.get_present_fe_values(), *condition.function);
+              add_load(hp_face_values.get_present_fe_values(),
+                       *condition.function,
+                       !nodal_tractions,
+                       nodal_tractions ? cell_traction : cell_force);
             }
         dof_indices.resize(cell_force.size());
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          force(dof_indices[i]) += cell_force(i);
+          {
+            force(dof_indices[i]) += cell_force(i);
+            if (nodal_tractions)
+              traction(dof_indices[i]) += cell_traction(i);
+          }
       }
     force.compress(VectorOperation::add);
-    if (nodal)
-      for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
-        force.local_element(i) *= nodal_force_weights[i];
+    if (nodal_tractions)
+      {
+        traction.compress(VectorOperation::add);
+        for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+          force.local_element(i) += nodal_force_weights[i] * traction.local_element(i);
+      }
   }
 
   template <int dim>
